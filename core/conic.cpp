@@ -1,0 +1,238 @@
+#include "conic.h"
+
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+
+namespace hlens {
+
+double Quadratic2::scale() const {
+    return std::max({std::fabs(a), std::fabs(b), std::fabs(c), std::fabs(d), std::fabs(e), std::fabs(f)});
+}
+
+std::string Quadratic2::to_string() const {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%.9g x^2 %+.9g xy %+.9g y^2 %+.9g x %+.9g y %+.9g", a, 2 * b, c, 2 * d, 2 * e, f);
+    return buf;
+}
+
+bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel) {
+    double s = std::max(p.scale(), q.scale());
+    return (p - q).scale() <= rel * std::max(s, 1e-300);
+}
+
+Quadratic2 half_plane(Vec2 n, double offset) {
+    Quadratic2 q;
+    q.d = 0.5 * n.x;
+    q.e = 0.5 * n.y;
+    q.f = -offset;
+    return q;
+}
+
+Vec2 RationalCurve::derivative(double z) const {
+    double w = w0 + z * (w1 + z * w2), dw = w1 + 2 * z * w2;
+    Vec2 N = n0 + z * (n1 + z * n2), dN = n1 + 2 * z * n2;
+    return (dN * w - N * dw) / (w * w);
+}
+
+Poly RationalCurve::weight() const {
+    Poly w;
+    w.deg = 2;
+    w.c[0] = w0; w.c[1] = w1; w.c[2] = w2;
+    return w;
+}
+
+Poly RationalCurve::compose(const Quadratic2& q) const {
+    Poly X, Y, W = weight();
+    X.deg = Y.deg = 2;
+    X.c[0] = n0.x; X.c[1] = n1.x; X.c[2] = n2.x;
+    Y.c[0] = n0.y; Y.c[1] = n1.y; Y.c[2] = n2.y;
+    Poly r = q.a * (X * X) + (2 * q.b) * (X * Y) + q.c * (Y * Y) + (2 * q.d) * (X * W) + (2 * q.e) * (Y * W) + q.f * (W * W);
+    r.deg = 4;
+    return r;
+}
+
+const char* curve_kind_name(CurveKind k) {
+    switch (k) {
+        case CurveKind::Line: return "line";
+        case CurveKind::Ellipse: return "ellipse";
+        case CurveKind::Hyperbola: return "hyperbola";
+        case CurveKind::Parabola: return "parabola";
+    }
+    return "?";
+}
+
+const char* conic_type_name(ConicType t) {
+    switch (t) {
+        case ConicType::Empty: return "empty";
+        case ConicType::Point: return "point";
+        case ConicType::DoubleLine: return "double line";
+        case ConicType::Line: return "line";
+        case ConicType::ParallelLines: return "parallel lines";
+        case ConicType::LinePair: return "line pair";
+        case ConicType::Ellipse: return "ellipse";
+        case ConicType::Hyperbola: return "hyperbola";
+        case ConicType::Parabola: return "parabola";
+        case ConicType::Everything: return "everything";
+    }
+    return "?";
+}
+
+Vec2 CurveComponent::at(double t) const {
+    switch (kind) {
+        case CurveKind::Line: return c + t * u;
+        case CurveKind::Parabola: return c + t * u + (t * t) * v;
+        case CurveKind::Ellipse: return c + std::cos(t) * u + std::sin(t) * v;
+        case CurveKind::Hyperbola: return c + std::cosh(t) * u + std::sinh(t) * v;
+    }
+    return c;
+}
+
+double CurveComponent::param_of(Vec2 p) const {
+    Vec2 w = p - c;
+    switch (kind) {
+        case CurveKind::Line:
+        case CurveKind::Parabola: return dot(w, u) / norm2(u);
+        case CurveKind::Ellipse: return std::atan2(dot(w, v) / norm2(v), dot(w, u) / norm2(u));
+        case CurveKind::Hyperbola: return std::asinh(dot(w, v) / norm2(v));
+    }
+    return 0;
+}
+
+std::vector<CurveComponent::Piece> CurveComponent::pieces(double t0, double t1) const {
+    std::vector<Piece> out;
+    assert(t1 >= t0);
+    if (kind == CurveKind::Line || kind == CurveKind::Parabola) {
+        RationalCurve r;
+        r.n0 = c; r.n1 = u;
+        if (kind == CurveKind::Parabola) r.n2 = v;
+        out.push_back({r, t0, t1});
+        return out;
+    }
+    // Split so that every piece's weight stays away from zero.
+    const double max_span = kind == CurveKind::Ellipse ? M_PI : 3.0;
+    int k = std::max(1, (int)std::ceil((t1 - t0) / max_span - 1e-12));
+    for (int i = 0; i < k; ++i) {
+        double a = t0 + (t1 - t0) * i / k, b = i + 1 == k ? t1 : t0 + (t1 - t0) * (i + 1) / k;
+        double tm = 0.5 * (a + b), half = 0.5 * (b - a);
+        RationalCurve r;
+        if (kind == CurveKind::Ellipse) {
+            double cm = std::cos(tm), sm = std::sin(tm);
+            r.n0 = c + cm * u + sm * v;
+            r.n1 = 2.0 * (-sm * u + cm * v);
+            r.n2 = c - cm * u - sm * v;
+            r.w0 = 1; r.w1 = 0; r.w2 = 1;
+            double z = std::tan(0.5 * half);
+            out.push_back({r, -z, z});
+        } else {
+            double ch = std::cosh(tm), sh = std::sinh(tm);
+            r.n0 = c + ch * u + sh * v;
+            r.n1 = 2.0 * (sh * u + ch * v);
+            r.n2 = -1.0 * c + ch * u + sh * v;
+            r.w0 = 1; r.w1 = 0; r.w2 = -1;
+            double z = std::tanh(0.5 * half);
+            out.push_back({r, -z, z});
+        }
+    }
+    return out;
+}
+
+ConicDecomposition decompose_conic(const Quadratic2& q0) {
+    ConicDecomposition out;
+    double s = q0.scale();
+    if (s == 0 || !std::isfinite(s)) { out.type = ConicType::Everything; return out; }
+    Quadratic2 q = q0 * (1.0 / s);
+    // Relative thresholds: the plane is scaled so the target has unit size.
+    const double eps_quad = 1e-12, eps_par = 1e-10, eps_k = 1e-14, eps_lin = 1e-12;
+
+    // Eigen-decomposition of the quadratic part [[a b][b c]].
+    double theta = 0.5 * std::atan2(2 * q.b, q.a - q.c);
+    Vec2 e1{std::cos(theta), std::sin(theta)}, e2{-e1.y, e1.x};
+    auto quad = [&](Vec2 e) { return q.a * e.x * e.x + 2 * q.b * e.x * e.y + q.c * e.y * e.y; };
+    double l1 = quad(e1), l2 = quad(e2);
+    if (std::fabs(l2) > std::fabs(l1)) { std::swap(l1, l2); std::swap(e1, e2); }
+    Vec2 B{q.d, q.e};
+
+    auto add_line = [&](Vec2 point, Vec2 dir) {
+        CurveComponent cc;
+        cc.kind = CurveKind::Line;
+        cc.u = dir / norm(dir);
+        cc.c = point - dot(point, cc.u) * cc.u;  // foot of the origin: keeps parameters small
+        out.components.push_back(cc);
+    };
+
+    if (std::fabs(l1) <= eps_quad) {  // linear: 2 B.x + f = 0
+        double nb = norm(B);
+        if (nb <= eps_lin) { out.type = std::fabs(q.f) <= eps_lin ? ConicType::Everything : ConicType::Empty; return out; }
+        Vec2 n = B / nb;
+        add_line(n * (-q.f / (2 * nb)), perp(n));
+        out.type = ConicType::Line;
+        return out;
+    }
+    double b1 = dot(B, e1), b2 = dot(B, e2);
+    if (std::fabs(l2) > eps_par * std::fabs(l1)) {
+        // Central conic: l1 X'^2 + l2 Y'^2 + k = 0 around the centre m.
+        double X0 = -b1 / l1, Y0 = -b2 / l2;
+        double k = q.f - b1 * b1 / l1 - b2 * b2 / l2;
+        Vec2 m = X0 * e1 + Y0 * e2;
+        if ((l1 > 0) == (l2 > 0)) {
+            if (std::fabs(k) <= eps_k) { out.type = ConicType::Point; return out; }
+            if ((k > 0) == (l1 > 0)) { out.type = ConicType::Empty; return out; }
+            CurveComponent cc;
+            cc.kind = CurveKind::Ellipse;
+            cc.c = m;
+            cc.u = std::sqrt(-k / l1) * e1;
+            cc.v = std::sqrt(-k / l2) * e2;
+            out.components.push_back(cc);
+            out.type = ConicType::Ellipse;
+            return out;
+        }
+        if (std::fabs(k) <= eps_k) {
+            double r = std::sqrt(-l1 / l2);
+            add_line(m, e1 + r * e2);
+            add_line(m, e1 - r * e2);
+            out.type = ConicType::LinePair;
+            return out;
+        }
+        // Hyperbola: branches open along the axis whose eigenvalue has the sign opposite to k.
+        Vec2 ea = e1, eb = e2;
+        double la = l1, lb = l2;
+        if ((k > 0) == (l1 > 0)) { std::swap(ea, eb); std::swap(la, lb); }
+        double A = std::sqrt(-k / la), Bv = std::sqrt(k / lb);
+        for (int sgn : {1, -1}) {
+            CurveComponent cc;
+            cc.kind = CurveKind::Hyperbola;
+            cc.c = m;
+            cc.u = (sgn * A) * ea;
+            cc.v = Bv * eb;
+            out.components.push_back(cc);
+        }
+        out.type = ConicType::Hyperbola;
+        return out;
+    }
+    // Parabolic: l2 ~ 0, so q = l1 X^2 + 2 b1 X + 2 b2 Y + f.
+    if (std::fabs(b2) > eps_par) {
+        double X0 = -b1 / l1;
+        double Y0 = -(l1 * X0 * X0 + 2 * b1 * X0 + q.f) / (2 * b2);
+        CurveComponent cc;
+        cc.kind = CurveKind::Parabola;
+        cc.c = X0 * e1 + Y0 * e2;
+        cc.u = e1;
+        cc.v = (-l1 / (2 * b2)) * e2;
+        out.components.push_back(cc);
+        out.type = ConicType::Parabola;
+        return out;
+    }
+    double disc = b1 * b1 - l1 * q.f;
+    if (disc <= eps_k) {
+        out.type = disc >= -eps_k ? ConicType::DoubleLine : ConicType::Empty;
+        return out;
+    }
+    double r = std::sqrt(disc);
+    add_line(((-b1 + r) / l1) * e1, e2);
+    add_line(((-b1 - r) / l1) * e1, e2);
+    out.type = ConicType::ParallelLines;
+    return out;
+}
+
+}  // namespace hlens

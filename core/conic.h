@@ -1,0 +1,84 @@
+// Quadratic polynomials in the plane of a target, the conics they define, and conic arcs.
+//
+// Straub 2007 §2-3.1: the squared distance to every feature of a source triangle, restricted to
+// the plane of T', is a quadratic q(x, y); two domains meet where q1 - q2 = 0, a conic. We keep
+// every arc as a rational quadratic curve p(z) = N(z) / w(z) on an interval of z, whatever its
+// kind, so that substituting it into a quadratic gives a quartic and its maxima a quintic
+// (design notes, "Where the maximum is").
+#pragma once
+#include <string>
+#include <vector>
+
+#include "poly.h"
+#include "vec.h"
+
+namespace hlens {
+
+// q(x,y) = a x^2 + 2 b x y + c y^2 + 2 d x + 2 e y + f
+struct Quadratic2 {
+    double a = 0, b = 0, c = 0, d = 0, e = 0, f = 0;
+    double operator()(Vec2 p) const {
+        return a * p.x * p.x + 2 * b * p.x * p.y + c * p.y * p.y + 2 * d * p.x + 2 * e * p.y + f;
+    }
+    Vec2 gradient(Vec2 p) const { return {2 * (a * p.x + b * p.y + d), 2 * (b * p.x + c * p.y + e)}; }
+    Quadratic2 operator-(const Quadratic2& o) const { return {a - o.a, b - o.b, c - o.c, d - o.d, e - o.e, f - o.f}; }
+    Quadratic2 operator*(double s) const { return {a * s, b * s, c * s, d * s, e * s, f * s}; }
+    double scale() const;  // largest coefficient magnitude
+    bool is_linear() const { return a == 0 && b == 0 && c == 0; }
+    std::string to_string() const;
+};
+
+// Two quadratics are the same polynomial up to rounding (coplanar sources, shared edges).
+bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel = 1e-11);
+
+// The line n.x = offset as a linear quadratic (f >= 0 on the side n points to).
+Quadratic2 half_plane(Vec2 n, double offset);
+
+// p(z) = (n0 + n1 z + n2 z^2) / (w0 + w1 z + w2 z^2); w > 0 on the arcs we build.
+struct RationalCurve {
+    Vec2 n0, n1, n2;
+    double w0 = 1, w1 = 0, w2 = 0;
+    Vec2 operator()(double z) const {
+        double w = w0 + z * (w1 + z * w2);
+        return (n0 + z * (n1 + z * n2)) / w;
+    }
+    Vec2 derivative(double z) const;
+    // q(p(z)) * w(z)^2, a polynomial of degree <= 4 with the sign of q(p(z)).
+    Poly compose(const Quadratic2& q) const;
+    Poly weight() const;
+    bool straight() const { return n2.x == 0 && n2.y == 0 && w1 == 0 && w2 == 0; }
+};
+
+enum class CurveKind { Line, Ellipse, Hyperbola, Parabola };
+const char* curve_kind_name(CurveKind k);
+
+// One connected component of a conic (or a line), with a global parameter t:
+//   Line      p = c + t u            Parabola  p = c + t u + t^2 v
+//   Ellipse   p = c + u cos t + v sin t        (periodic, u ⟂ v)
+//   Hyperbola p = c + u cosh t + v sinh t      (one branch, u ⟂ v)
+struct CurveComponent {
+    CurveKind kind = CurveKind::Line;
+    Vec2 c, u, v;
+    Vec2 at(double t) const;
+    double param_of(Vec2 p) const;  // parameter of (the foot of) a point on the curve
+    // The piece [t0, t1] as one or more rational arcs with well-conditioned weights (an ellipse
+    // piece spans at most pi per arc, a hyperbola piece at most 3 in t); returns the z-intervals.
+    struct Piece { RationalCurve curve; double z0, z1; };
+    std::vector<Piece> pieces(double t0, double t1) const;
+    bool closed() const { return kind == CurveKind::Ellipse; }
+};
+
+// What q = 0 looks like, for display and for the debugger's hover text.
+enum class ConicType { Empty, Point, DoubleLine, Line, ParallelLines, LinePair, Ellipse, Hyperbola, Parabola, Everything };
+const char* conic_type_name(ConicType t);
+
+struct ConicDecomposition {
+    ConicType type = ConicType::Empty;
+    std::vector<CurveComponent> components;  // the zero set where q changes sign
+};
+
+// Decompose q = 0 into curve components. Zero sets across which q does not change sign (a double
+// line, a single point) have no components: they never separate a positive from a negative part.
+ConicDecomposition decompose_conic(const Quadratic2& q);
+
+}  // namespace hlens

@@ -1,0 +1,132 @@
+// The domain mesh of one target triangle T': an attributed half-edge structure over T'.
+//
+// Straub 2007 §3.1: faces are the domains of d^2 (each carries the quadratic of d^2 there and a
+// label naming the source triangle and which of its seven regions), edges are conic or straight
+// arcs carrying their equation and a parameterisation, vertices are 2D points. A source triangle
+// is inserted by clipping each domain it reaches by its regions and by the conic
+// q_domain - q_region = 0, and neighbouring domains whose quadratics are equal are merged.
+//
+// Faces may have holes (a closed ellipse inside a domain). The plane is the target's own frame
+// (see regions.h): T' has unit size, so every tolerance here is relative.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "conic.h"
+#include "regions.h"
+
+namespace hlens {
+
+struct DomainLabel {
+    int32_t source = -1;        // index of the source triangle in B; -1: no source inserted yet
+    Region region = Region::abc;
+    bool operator==(const DomainLabel& o) const { return source == o.source && region == o.region; }
+};
+
+enum class ArcKind : uint8_t { TargetBoundary, RegionBoundary, Conic };
+const char* arc_kind_name(ArcKind k);
+
+struct Candidate {              // a point where the maximum of d^2 over T' may lie
+    Vec2 p;
+    double value;               // d^2 there by the adjacent face's quadratic (frame units)
+    int vertex = -1;            // a domain vertex, or
+    int edge = -1;              // the interior maximum of a curved arc
+};
+
+class DomainMesh {
+public:
+    struct Vertex { Vec2 p; bool alive = true; };
+    struct Edge {
+        RationalCurve curve;    // the arc is curve(z) for z in [z0, z1]; half-edge 2e runs z0 -> z1
+        double z0 = 0, z1 = 1;
+        Quadratic2 equation;    // the arc lies on equation = 0
+        ArcKind kind = ArcKind::Conic;
+        CurveKind curve_kind = CurveKind::Line;
+        bool alive = true;
+    };
+    struct HalfEdge { int origin = -1, next = -1, prev = -1, face = -1; };
+    struct Face {
+        Quadratic2 poly;        // d^2 over the domain (frame units); meaningless while `infinite`
+        DomainLabel label;
+        bool infinite = true;   // d^2 = +inf: no source covers it yet
+        std::vector<int> loops; // one half-edge per boundary loop: the outer loop first, then holes
+        bool alive = true;
+        double max_value = HUGE_VAL;  // max of poly over the face, from the last update_maxima()
+    };
+    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0; };
+
+    // Events a caller may watch while a source is inserted (all optional).
+    struct Listener {
+        std::function<void(int parent, const std::vector<int>& children, const Quadratic2& curve)> on_split;
+        std::function<void(int face, DomainLabel old_label, DomainLabel new_label)> on_relabel;
+        std::function<void(int kept, int removed)> on_merge;
+    };
+
+    explicit DomainMesh(const std::array<Vec2, 3>& ccw_corners);
+
+    // Insert one source (its regions with their quadratics): d^2 := min(d^2, d_T^2).
+    // `cull(face)` may return true for faces the source provably cannot reach.
+    void insert(const SourceProjection& src, const std::function<bool(int face)>& cull = {},
+                const Listener* listener = nullptr);
+
+    // Maxima of each face's quadratic on its boundary; returns every candidate point.
+    std::vector<Candidate> update_maxima();
+
+    // Invariants; returns an empty string when they hold, else a description of the first failure.
+    std::string validate(double area_tol = 1e-9) const;
+
+    // Queries used by the solver, the tests and the debugger.
+    const std::vector<Vertex>& vertices() const { return vertices_; }
+    const std::vector<Edge>& edges() const { return edges_; }
+    const std::vector<HalfEdge>& half_edges() const { return half_; }
+    const std::vector<Face>& faces() const { return faces_; }
+    int outside_face() const { return 0; }
+    int num_live_faces() const;
+    int num_live_edges() const;
+    int num_live_vertices() const;
+    double face_area(int f) const;
+    double loop_area(int h) const;
+    bool point_in_face(int f, Vec2 p) const;
+    bool interior_point(int f, Vec2& out) const;     // some point strictly inside face f
+    bool near_boundary(int f, Vec2 p, double tol) const;  // p within tol of face f's boundary
+    int face_at(Vec2 p) const;                       // the live inner face containing p, or -1
+    std::vector<int> face_half_edges(int f) const;   // all half-edges of all loops of f
+    std::vector<Vec2> sample_loop(int h, int per_arc) const;  // a polyline along a loop
+    Vec2 edge_point(int e, double s) const;          // s in [0,1] along the arc's parameter
+    const Stats& stats() const { return stats_; }
+
+    // Building blocks, public for tests.
+    struct SplitPiece { int face; int sign; };
+    std::vector<SplitPiece> split_face(int f, const Quadratic2& g);
+    int split_edge(int e, double z);
+    void merge_equal_neighbours(const Listener* listener = nullptr);
+
+private:
+    std::vector<Vertex> vertices_;
+    std::vector<Edge> edges_;
+    std::vector<HalfEdge> half_;
+    std::vector<Face> faces_;
+    Stats stats_;
+
+    int add_vertex(Vec2 p);
+    int add_edge(const RationalCurve& c, double z0, double z1, const Quadratic2& eq, ArcKind kind, CurveKind ck);
+    int target(int h) const { return half_[h ^ 1].origin; }
+    Vec2 he_point(int h, double s) const;            // s in [0,1] along the half-edge's direction
+    Vec2 out_tangent(int h) const;                   // direction leaving origin(h)
+    int find_wedge(int face, int v, Vec2 dir, Vec2 dir2) const;
+    void insert_path(int face, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
+    std::vector<int> rebuild_faces(const std::vector<int>& hes, int reuse);
+    void remove_edge(int e);
+    void dissolve_collinear_vertices();
+    double edge_max(int e, const Quadratic2& q, Vec2* where) const;
+    bool polish_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& p) const;
+    bool polish_arc_max(const Quadratic2& q, const Quadratic2& g, Vec2& p) const;
+};
+
+// Largest value of q along the arc curve(z), z in [z0, z1], over interior critical points only.
+// Returns -inf if there are none.
+double arc_interior_max(const RationalCurve& c, double z0, double z1, const Quadratic2& q, double* zmax);
+
+}  // namespace hlens

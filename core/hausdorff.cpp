@@ -1,0 +1,200 @@
+// Straub 2007, Algorithm 1 (the loop over targets), plus the fast mode of the design notes
+// ("Beyond the paper: exact and fast") and the certified interval ("Certified answer").
+#include "hausdorff.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <numeric>
+#include <thread>
+
+#include "point_triangle.h"
+#include "target_solver.h"
+
+namespace hlens {
+
+const char* mode_name(Mode m) { return m == Mode::Paper ? "paper" : "fast"; }
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kTieMargin = 1e-9;
+
+// Run body(i) for i in [0, n) on `threads` workers, taking indices in order.
+template <class F>
+void parallel_for(size_t n, int threads, const std::atomic<bool>* cancel, F&& body) {
+    std::atomic<size_t> next{0};
+    std::exception_ptr error;
+    std::mutex error_mutex;
+    auto work = [&] {
+        for (;;) {
+            if (cancel && cancel->load()) return;
+            size_t i = next.fetch_add(1);
+            if (i >= n) return;
+            try {
+                body(i);
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(error_mutex);
+                if (!error) error = std::current_exception();
+                next = n;
+            }
+        }
+    };
+    int t = std::max(1, std::min<int>(threads, (int)std::max<size_t>(n, 1)));
+    std::vector<std::thread> pool;
+    for (int k = 1; k < t; ++k) pool.emplace_back(work);
+    work();
+    for (auto& th : pool) th.join();
+    if (error) std::rethrow_exception(error);
+}
+
+void atomic_max(std::atomic<double>& a, double v) {
+    double cur = a.load();
+    while (v > cur && !a.compare_exchange_weak(cur, v)) {}
+}
+
+struct Progress {
+    const HausdorffOptions& opt;
+    size_t total;
+    std::atomic<size_t> done{0};
+    std::atomic<long long> last_ms{-1000};
+    Clock::time_point start = Clock::now();
+    void tick() {
+        size_t d = ++done;
+        if (!opt.progress) return;
+        long long ms = std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+        long long prev = last_ms.load();
+        if ((ms - prev >= 100 || d == total) && last_ms.compare_exchange_strong(prev, ms)) opt.progress((double)d / total);
+    }
+};
+
+}  // namespace
+
+OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions& opt) {
+    auto t0 = Clock::now();
+    const TriangleMesh& A = grid.mesh(side);
+    const TriangleMesh& B = grid.mesh(1 - side);
+    const size_t n = A.num_triangles();
+    const int threads = opt.threads > 0 ? opt.threads : (int)std::max(1u, std::thread::hardware_concurrency());
+    OneSidedResult r;
+    r.target_max.assign(n, 0.0);
+    r.target_exact.assign(n, 0);
+    std::vector<double> value_sq(n, -1.0);  // exact max of d^2 per target (world units), -1: not solved
+    std::vector<Vec3> where(n);
+    std::vector<double> slack(n, 0.0);
+
+    auto solve = [&](uint32_t t, double stop_below) {
+        TargetSolver ts(grid, side, t);
+        if (stop_below >= 0) ts.stop_below(stop_below);
+        ts.run();
+        if (ts.stopped_early()) {
+            r.target_max[t] = std::sqrt(ts.max_sq());
+            return -1.0;
+        }
+        value_sq[t] = ts.max_sq();
+        where[t] = ts.max_point();
+        slack[t] = ts.slack();
+        r.target_max[t] = std::sqrt(ts.max_sq());
+        r.target_exact[t] = 1;
+        return ts.max_sq();
+    };
+
+    if (opt.mode == Mode::Paper) {
+        Progress prog{opt, n};
+        parallel_for(n, threads, opt.cancel, [&](size_t t) { solve((uint32_t)t, -1); prog.tick(); });
+    } else {
+        // Lower bound: the farthest used vertex of A; and for each vertex its nearest triangle of B.
+        const size_t nv = A.positions.size();
+        std::vector<char> used(nv, 0);
+        for (const Tri& f : A.triangles)
+            for (uint32_t i : f) used[i] = 1;
+        std::vector<uint32_t> nearest_tri(nv, UINT32_MAX);
+        std::vector<double> nearest_d2(nv, 0);
+        parallel_for(nv, threads, opt.cancel, [&](size_t v) {
+            if (!used[v]) return;
+            VoxelGrid::Nearest q = grid.nearest(1 - side, A.positions[v]);
+            nearest_tri[v] = q.triangle;
+            nearest_d2[v] = q.dist2;
+        });
+        std::atomic<double> L{0.0};
+        for (size_t v = 0; v < nv; ++v)
+            if (used[v]) atomic_max(L, nearest_d2[v]);
+        // Upper bound per target: min over the corners' nearest triangles T of max_v |v - T|^2.
+        std::vector<double> U(n, HUGE_VAL);
+        parallel_for(n, threads, opt.cancel, [&](size_t t) {
+            auto c = A.corners(t);
+            for (uint32_t v : A.triangles[t]) {
+                uint32_t s = nearest_tri[v];
+                if (s == UINT32_MAX) continue;
+                auto sc = B.corners(s);
+                double m = 0;
+                for (const Vec3& p : c) m = std::max(m, closest_point_on_triangle(p, sc[0], sc[1], sc[2]).dist2);
+                U[t] = std::min(U[t], m);
+            }
+        });
+        std::vector<uint32_t> order(n);
+        std::iota(order.begin(), order.end(), 0u);
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return U[x] > U[y]; });
+        Progress prog{opt, n};
+        parallel_for(n, threads, opt.cancel, [&](size_t k) {
+            uint32_t t = order[k];
+            // With a relative margin far above rounding: a target whose maximum could equal the
+            // result (a tie, or the same value computed another way) is always solved exactly.
+            double l = L.load() * (1 - kTieMargin);
+            if (U[t] < l) {
+                r.target_max[t] = std::sqrt(U[t]);
+            } else {
+                double v = solve(t, l);
+                if (v >= 0) atomic_max(L, v);
+            }
+            prog.tick();
+        });
+    }
+    r.cancelled = opt.cancel && opt.cancel->load();
+
+    // The witness: the largest exact value, the lowest index among equals.
+    double best = -1;
+    for (size_t t = 0; t < n; ++t) {
+        if (value_sq[t] > best) { best = value_sq[t]; r.target = (uint32_t)t; }
+        r.exact_targets += r.target_exact[t];
+    }
+    if (best >= 0) {
+        r.distance = std::sqrt(best);
+        r.from_point = where[r.target];
+        // lower: the true distance from the witness point to B, by exact point-triangle distances
+        // over the whole of B, independently of the domain meshes.
+        VoxelGrid::Nearest q = grid.nearest(1 - side, r.from_point);
+        r.to_point = q.point;
+        r.lower = std::min(r.distance, std::sqrt(q.dist2));
+        // upper: the domain meshes' maximum, widened by a bound on the rounding of coordinates.
+        Box3 box = A.bounds();
+        box.add(B.bounds());
+        double coord = std::max({std::fabs(box.lo.x), std::fabs(box.lo.y), std::fabs(box.lo.z), std::fabs(box.hi.x),
+                                 std::fabs(box.hi.y), std::fabs(box.hi.z)});
+        r.upper = r.distance;
+        for (size_t t = 0; t < n; ++t)  // a sliver target's value may be short by its height
+            if (slack[t] > 0 && value_sq[t] >= 0) r.upper = std::max(r.upper, std::sqrt(value_sq[t]) + slack[t]);
+        r.upper += 1e-13 * (coord + box.diagonal()) + 1e-12 * r.distance;
+    }
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return r;
+}
+
+HausdorffResult hausdorff(const TriangleMesh& A, const TriangleMesh& B, const HausdorffOptions& opt, bool one_sided_only) {
+    auto t0 = Clock::now();
+    VoxelGrid grid(A, B);
+    HausdorffResult r;
+    r.a_to_b = one_sided(grid, 0, opt);
+    if (!one_sided_only) {
+        r.b_to_a = one_sided(grid, 1, opt);
+        r.hausdorff = std::max(r.a_to_b.distance, r.b_to_a.distance);
+    } else {
+        r.hausdorff = r.a_to_b.distance;
+    }
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return r;
+}
+
+}  // namespace hlens

@@ -1,0 +1,20 @@
+// Exact (to rounding) closest point on a triangle, robust for slivers and degenerate triangles.
+#pragma once
+#include "vec.h"
+
+namespace hlens {
+
+struct ClosestPoint {
+    Vec3 point;    // closest point of the triangle (or segment) to the query
+    double dist2;  // squared distance from the query to `point`
+};
+
+// Closest point of the segment [a,b] to p (a point when a == b).
+ClosestPoint closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
+
+// Closest point of the closed triangle abc to p. A triangle whose height is <= 1e-12 of its longest
+// edge (|cross|^2 <= 1e-24 * longest^4) is treated as the union of its three edges: the answer is then
+// off by at most that height, and collinear or coincident corners are handled exactly.
+ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+}  // namespace hlens

@@ -1,0 +1,203 @@
+#include "regions.h"
+
+#include <cmath>
+
+#include "point_triangle.h"
+
+namespace hlens {
+
+namespace {
+
+// Cross product in extended precision: the normal of a sliver is the difference of two nearly
+// equal products, and its direction decides the face region and the face polynomial.
+Vec3 precise_normal(const Vec3& a, const Vec3& b, const Vec3& c) {
+    long double ux = (long double)b.x - a.x, uy = (long double)b.y - a.y, uz = (long double)b.z - a.z;
+    long double vx = (long double)c.x - a.x, vy = (long double)c.y - a.y, vz = (long double)c.z - a.z;
+    long double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    long double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+    if (len == 0) return {0, 0, 0};
+    return {(double)(nx / len), (double)(ny / len), (double)(nz / len)};
+}
+
+bool lex_less(const Vec3& p, const Vec3& q) {
+    if (p.x != q.x) return p.x < q.x;
+    if (p.y != q.y) return p.y < q.y;
+    return p.z < q.z;
+}
+
+}  // namespace
+
+TargetFrame TargetFrame::make(const std::array<Vec3, 3>& c) {
+    TargetFrame f;
+    int i = 0;  // the longest edge runs from corner i to corner i+1
+    double best = -1;
+    for (int k = 0; k < 3; ++k) {
+        double l = norm2(c[(k + 1) % 3] - c[k]);
+        if (l > best) { best = l; i = k; }
+    }
+    int j = (i + 1) % 3, k = (i + 2) % 3;
+    f.origin = c[i];
+    f.scale = std::sqrt(best);
+    if (f.scale == 0) {  // all three corners coincide
+        f.scale = 1;
+        f.degenerate = true;
+        f.e1 = {1, 0, 0}; f.e2 = {0, 1, 0}; f.normal = {0, 0, 1};
+        f.corners = {Vec2{0, 0}, Vec2{0, 0}, Vec2{0, 0}};
+        f.ccw_order = {0, 1, 2};
+        return f;
+    }
+    f.e1 = (c[j] - c[i]) / f.scale;
+    f.normal = precise_normal(c[i], c[j], c[k]);
+    if (norm2(f.normal) == 0) {
+        // Collinear: any e2 perpendicular to e1 serves; the target is a segment.
+        Vec3 t = std::fabs(f.e1.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+        f.normal = cross(f.e1, t);
+        f.normal = f.normal / norm(f.normal);
+    }
+    f.e2 = cross(f.normal, f.e1);
+    f.e2 = f.e2 / norm(f.e2);
+    f.corners[i] = {0, 0};
+    f.corners[j] = {1, 0};
+    f.corners[k] = f.to_frame(c[k]);
+    f.ccw_order = {i, j, k};
+    // Height of the third corner over the longest edge, relative to it: below 1e-7 the domain
+    // mesh's own tolerances are no longer small against the target, so it is handled as edges.
+    f.degenerate = !(f.corners[k].y > 1e-7);
+    return f;
+}
+
+const char* region_name(Region r) {
+    static const char* names[] = {"R_abc", "R_ab", "R_bc", "R_ca", "R_a", "R_b", "R_c"};
+    return names[(int)r];
+}
+
+namespace {
+
+struct Projector {
+    const TargetFrame& F;
+    // A 3D point into frame-scaled coordinates relative to the origin.
+    Vec3 rel(const Vec3& p) const { return (p - F.origin) / F.scale; }
+
+    Quadratic2 vertex(const Vec3& a) const {
+        Vec3 r = rel(a);
+        Quadratic2 q;
+        q.a = 1; q.c = 1;
+        q.d = -dot(F.e1, r); q.e = -dot(F.e2, r);
+        q.f = norm2(r);
+        return q;
+    }
+    // Squared distance to the line through p0 and p1.
+    Quadratic2 edge(Vec3 p0, Vec3 p1) const {
+        if (lex_less(p1, p0)) std::swap(p0, p1);  // shared edges give bit-identical polynomials
+        Vec3 u = p1 - p0;
+        u = u / norm(u);
+        Vec3 r = rel(p0);
+        Vec3 perp_r = r - dot(u, r) * u;  // M r, with M = I - u u^T
+        double u1 = dot(F.e1, u), u2 = dot(F.e2, u);
+        Quadratic2 q;
+        q.a = 1 - u1 * u1; q.b = -u1 * u2; q.c = 1 - u2 * u2;
+        q.d = -dot(F.e1, perp_r); q.e = -dot(F.e2, perp_r);
+        q.f = norm2(perp_r);
+        return q;
+    }
+    Quadratic2 plane(const Vec3& p0, const Vec3& n) const {
+        double h = dot(n, rel(p0));
+        double n1 = dot(F.e1, n), n2 = dot(F.e2, n);
+        Quadratic2 q;
+        q.a = n1 * n1; q.b = n1 * n2; q.c = n2 * n2;
+        q.d = -h * n1; q.e = -h * n2;
+        q.f = h * h;
+        return q;
+    }
+    // {p : (p - a).m >= 0} within the frame's plane.
+    HalfPlane halfspace(const Vec3& a, Vec3 m) const {
+        m = m / norm(m);
+        HalfPlane h;
+        Vec2 n{dot(F.e1, m), dot(F.e2, m)};
+        double off = dot(rel(a), m);
+        double ln = norm(n);
+        if (ln <= 1e-12) {
+            // Boundary plane parallel to the target: all or nothing, by the side the plane is on.
+            h.kind = off <= 1e-12 ? HalfPlane::All : HalfPlane::None;
+            return h;
+        }
+        h.n = n / ln;
+        h.offset = off / ln;
+        return h;
+    }
+};
+
+}  // namespace
+
+SourceProjection project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t index) {
+    SourceProjection out;
+    out.source = index;
+    Projector P{F};
+    const Vec3 &a = s[0], &b = s[1], &c = s[2];
+    double longest2 = std::max({norm2(b - a), norm2(c - b), norm2(a - c)});
+    Vec3 n = precise_normal(a, b, c);
+    long double area2 = norm2(cross(b - a, c - a));
+    bool degenerate = norm2(n) == 0 || area2 <= 1e-28L * longest2 * longest2;
+    if (degenerate) {
+        out.degenerate = true;
+        // The farthest pair of corners spans the segment; a point if they coincide.
+        int i = 0;
+        double best = -1;
+        for (int k = 0; k < 3; ++k) {
+            double l = norm2(s[(k + 1) % 3] - s[k]);
+            if (l > best) { best = l; i = k; }
+        }
+        int j = (i + 1) % 3;
+        static const Region vreg[3] = {Region::a, Region::b, Region::c};
+        static const Region ereg[3] = {Region::ab, Region::bc, Region::ca};
+        if (best == 0) {
+            out.regions.push_back({Region::a, {}, P.vertex(a)});
+            return out;
+        }
+        const Vec3 &p = s[i], &q = s[j];
+        out.regions.push_back({vreg[i], {P.halfspace(p, p - q)}, P.vertex(p)});
+        out.regions.push_back({vreg[j], {P.halfspace(q, q - p)}, P.vertex(q)});
+        out.regions.push_back({ereg[i], {P.halfspace(p, q - p), P.halfspace(q, p - q)}, P.edge(p, q)});
+        return out;
+    }
+    // Outward in-plane normals of the edges.
+    auto outward = [&](const Vec3& p, const Vec3& q, const Vec3& opp) {
+        Vec3 m = cross(q - p, n);
+        if (dot(opp - p, m) > 0) m = -m;
+        return m;
+    };
+    Vec3 mab = outward(a, b, c), mbc = outward(b, c, a), mca = outward(c, a, b);
+    out.regions.push_back({Region::a, {P.halfspace(a, a - b), P.halfspace(a, a - c)}, P.vertex(a)});
+    out.regions.push_back({Region::b, {P.halfspace(b, b - a), P.halfspace(b, b - c)}, P.vertex(b)});
+    out.regions.push_back({Region::c, {P.halfspace(c, c - a), P.halfspace(c, c - b)}, P.vertex(c)});
+    out.regions.push_back({Region::ab, {P.halfspace(a, mab), P.halfspace(a, b - a), P.halfspace(b, a - b)}, P.edge(a, b)});
+    out.regions.push_back({Region::bc, {P.halfspace(b, mbc), P.halfspace(b, c - b), P.halfspace(c, b - c)}, P.edge(b, c)});
+    out.regions.push_back({Region::ca, {P.halfspace(c, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a)});
+    out.regions.push_back({Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(a, n)});
+    return out;
+}
+
+double source_distance2(const TargetFrame& F, const std::array<Vec3, 3>& s, Vec2 p) {
+    Vec3 w = F.to_world(p);
+    return closest_point_on_triangle(w, s[0], s[1], s[2]).dist2 / (F.scale * F.scale);
+}
+
+std::vector<Vec2> clip_convex(std::vector<Vec2> poly, const std::vector<HalfPlane>& planes) {
+    for (const HalfPlane& h : planes) {
+        if (h.kind == HalfPlane::All) continue;
+        if (h.kind == HalfPlane::None) return {};
+        std::vector<Vec2> out;
+        size_t n = poly.size();
+        for (size_t i = 0; i < n; ++i) {
+            Vec2 p = poly[i], q = poly[(i + 1) % n];
+            double fp = dot(h.n, p) - h.offset, fq = dot(h.n, q) - h.offset;
+            if (fp >= 0) out.push_back(p);
+            if ((fp >= 0) != (fq >= 0)) out.push_back(p + (fp / (fp - fq)) * (q - p));
+        }
+        poly.swap(out);
+        if (poly.empty()) break;
+    }
+    return poly;
+}
+
+}  // namespace hlens

@@ -1,0 +1,63 @@
+// The target's 2D frame and the seven regions of a source triangle projected into it.
+//
+// Straub 2007 §2, Fig. 1: the plane of T' is divided into the Voronoi regions of T, its edges and
+// its corners, R_abc, R_ab, R_bc, R_ca, R_a, R_b, R_c; over each, d_T^2 is one quadratic. Every
+// region is an intersection of 3D half-spaces with the plane of T', i.e. of 2D half-planes.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "conic.h"
+#include "vec.h"
+
+namespace hlens {
+
+// p(x, y) = origin + scale * (x e1 + y e2). The target's longest edge runs from (0,0) to (1,0) and
+// its third corner has y > 0, so the target has unit size and every tolerance is relative.
+struct TargetFrame {
+    Vec3 origin, e1, e2, normal;
+    double scale = 1;
+    std::array<Vec2, 3> corners;      // the target's corners in mesh order, in the frame
+    std::array<int, 3> ccw_order;     // mesh corner indices in counter-clockwise order
+    bool degenerate = false;          // zero (or nearly zero) area: handled as a segment or point
+    Vec3 to_world(Vec2 p) const { return origin + (p.x * scale) * e1 + (p.y * scale) * e2; }
+    Vec2 to_frame(const Vec3& p) const { Vec3 w = (p - origin) / scale; return {dot(w, e1), dot(w, e2)}; }
+    static TargetFrame make(const std::array<Vec3, 3>& corners);
+};
+
+enum class Region : uint8_t { abc = 0, ab, bc, ca, a, b, c };
+const char* region_name(Region r);
+
+// inside: n.p >= offset. `all` and `none` for boundary planes parallel to the target's plane.
+struct HalfPlane {
+    Vec2 n;
+    double offset = 0;
+    enum Kind : uint8_t { Line, All, None } kind = Line;
+    Quadratic2 as_quadratic() const { return half_plane(n, offset); }
+};
+
+struct SourceRegion {
+    Region kind;
+    std::vector<HalfPlane> planes;  // the region is their intersection (within the plane)
+    Quadratic2 poly;                // d_T^2 over the region, in frame units
+};
+
+// The regions of one source triangle, in the order they are inserted (vertex, edge, then face
+// regions, so the face region is what remains). A degenerate source (a segment or a point) has
+// three regions or one.
+struct SourceProjection {
+    uint32_t source = 0;
+    std::vector<SourceRegion> regions;
+    bool degenerate = false;
+};
+SourceProjection project_source(const TargetFrame& frame, const std::array<Vec3, 3>& source, uint32_t index);
+
+// The squared distance, in frame units, from the target point p to the source triangle, computed
+// directly in 3D (the independent value every candidate is evaluated with).
+double source_distance2(const TargetFrame& frame, const std::array<Vec3, 3>& source, Vec2 p);
+
+// A convex polygon: the target triangle clipped by half-planes (empty if nothing is left).
+std::vector<Vec2> clip_convex(std::vector<Vec2> poly, const std::vector<HalfPlane>& planes);
+
+}  // namespace hlens

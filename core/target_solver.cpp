@@ -1,0 +1,412 @@
+// Straub 2007 §3.1-3.2 for one target triangle: relevant triangles by a nearest-first voxel
+// search bounded by the shrinking search radius, each inserted into the domain mesh.
+#include "target_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <unordered_set>
+
+#include "point_triangle.h"
+
+namespace hlens {
+
+const char* event_name(EventKind k) {
+    static const char* names[] = {"target_begun",   "voxel_visited",  "voxel_culled",  "source_chosen", "source_culled",
+                                  "regions_projected", "domain_split", "domain_created", "domain_merged", "arc_maximum",
+                                  "maximum_raised", "search_radius_shrunk", "target_finished"};
+    return names[(int)k];
+}
+
+namespace {
+Event make_event(EventKind k) {
+    Event e;
+    e.kind = k;
+    return e;
+}
+}  // namespace
+
+struct TargetSolver::Seen {
+    std::unordered_set<size_t> voxels;
+    std::unordered_set<uint32_t> sources;
+};
+
+TargetSolver::TargetSolver(const VoxelGrid& grid, int side, uint32_t target)
+    : grid_(grid), side_(side), target_(target), seen_(std::make_unique<Seen>()) {
+    corners_ = grid_.mesh(side_).corners(target_);
+    frame_ = TargetFrame::make(corners_);
+    if (!frame_.degenerate) {
+        const auto& o = frame_.ccw_order;
+        mesh_ = std::make_unique<DomainMesh>(std::array<Vec2, 3>{frame_.corners[o[0]], frame_.corners[o[1]], frame_.corners[o[2]]});
+    }
+}
+
+TargetSolver::~TargetSolver() = default;
+
+TargetSolver& TargetSolver::on_event(std::function<void(const Event&)> cb) { callbacks_.push_back(std::move(cb)); return *this; }
+TargetSolver& TargetSolver::record_events(bool on) { recording_ = on; return *this; }
+TargetSolver& TargetSolver::stop_below(double b) { stop_below_ = b; return *this; }
+TargetSolver& TargetSolver::validate_each_insertion(bool on) { validate_each_ = on; return *this; }
+
+std::array<Vec3, 3> TargetSolver::source_corners(uint32_t s) const { return grid_.mesh(1 - side_).corners(s); }
+
+double TargetSolver::search_radius() const { return std::sqrt(max_sq_); }
+
+void TargetSolver::emit(Event e) {
+    e.step = next_step_++;
+    e.insertion = (int)inserted_.size();
+    e.radius = search_radius();
+    for (auto& cb : callbacks_) cb(e);
+    if (recording_) log_.push_back(std::move(e));
+}
+
+double TargetSolver::voxel_distance2(size_t v) const {
+    auto c = grid_.coords(v);
+    double best = HUGE_VAL;
+    for (const auto& t : target_voxels_) {
+        double d2 = 0;
+        for (int i = 0; i < 3; ++i) {
+            double g = std::max(0, std::abs(c[i] - t[i]) - 1) * grid_.voxel_size;
+            d2 += g * g;
+        }
+        best = std::min(best, d2);
+    }
+    return best;
+}
+
+void TargetSolver::begin() {
+    for (size_t v : grid_.voxels_of_triangle(side_, target_)) {
+        target_voxels_.push_back(grid_.coords(v));
+        seen_->voxels.insert(v);
+        queue_.push({0.0, v});
+    }
+    if (target_voxels_.empty()) {  // cannot happen for a triangle inside the grid; be safe
+        size_t v = 0;
+        auto c = grid_.locate(corners_[0]);
+        v = grid_.index(c[0], c[1], c[2]);
+        target_voxels_.push_back(c);
+        seen_->voxels.insert(v);
+        queue_.push({0.0, v});
+    }
+    if (watching()) {
+        Event e = make_event(EventKind::TargetBegun);
+        e.world = corners_[0];
+        emit(e);
+    }
+    phase_ = Phase::NextSource;
+}
+
+bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
+    // Radius test with a relative margin: rounding must never cull a voxel that could matter.
+    auto beyond = [&](double d2) { return d2 > max_sq_ * (1 + 1e-9) + 1e-300; };
+    const Box3 tbox = grid_.mesh(side_).triangle_bounds(target_);
+    for (;;) {
+        while (!pending_sources_.empty()) {
+            s = pending_sources_.back();
+            double d2 = pending_dist_.back();
+            pending_sources_.pop_back();
+            pending_dist_.pop_back();
+            if (beyond(d2)) {
+                if (watching()) {
+                    Event e = make_event(EventKind::SourceCulled);
+                    e.source = (int32_t)s; e.voxel = (long long)pending_voxel_; e.distance = std::sqrt(d2);
+                    emit(e);
+                }
+                continue;
+            }
+            dist = std::sqrt(d2);
+            voxel = pending_voxel_;
+            return true;
+        }
+        if (queue_.empty()) return false;
+        QueueItem top = queue_.top();
+        if (beyond(top.d2)) return false;
+        queue_.pop();
+        if (watching()) {
+            Event e = make_event(EventKind::VoxelVisited);
+            e.voxel = (long long)top.voxel; e.distance = std::sqrt(top.d2);
+            emit(e);
+            voxel_log_.push_back({top.voxel, 2});
+        }
+        auto c = grid_.coords(top.voxel);
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    int i = c[0] + dx, j = c[1] + dy, k = c[2] + dz;
+                    if (i < 0 || j < 0 || k < 0 || i >= grid_.nx || j >= grid_.ny || k >= grid_.nz) continue;
+                    size_t v = grid_.index(i, j, k);
+                    if (!seen_->voxels.insert(v).second) continue;
+                    double d2 = voxel_distance2(v);
+                    queue_.push({d2, v});
+                    if (watching()) voxel_log_.push_back({v, 1});
+                }
+        // Sources of this voxel, nearest (by bounding boxes) last so pop_back takes it first.
+        int other = 1 - side_;
+        std::vector<std::pair<double, uint32_t>> found;
+        for (const uint32_t* it = grid_.begin(other, top.voxel); it != grid_.end(other, top.voxel); ++it)
+            if (seen_->sources.insert(*it).second)
+                found.push_back({box_distance2(tbox, grid_.mesh(other).triangle_bounds(*it)), *it});
+        std::sort(found.begin(), found.end(), [](auto& a, auto& b) { return a.first > b.first || (a.first == b.first && a.second > b.second); });
+        for (auto& f : found) { pending_sources_.push_back(f.second); pending_dist_.push_back(f.first); }
+        pending_voxel_ = top.voxel;
+        pending_voxel_dist_ = std::sqrt(top.d2);
+    }
+}
+
+void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
+    if (watching()) {
+        Event e = make_event(EventKind::SourceChosen);
+        e.source = (int32_t)s; e.voxel = (long long)voxel; e.distance = dist;
+        emit(e);
+    }
+    std::array<Vec3, 3> sc = source_corners(s);
+    SourceProjection proj = project_source(frame_, sc, s);
+    inserted_.push_back(s);
+    if (!mesh_) { degenerate_maximum(); return; }
+    if (watching()) {
+        Event e = make_event(EventKind::RegionsProjected);
+        e.source = (int32_t)s;
+        const auto& o = frame_.ccw_order;
+        std::vector<Vec2> tri{frame_.corners[o[0]], frame_.corners[o[1]], frame_.corners[o[2]]};
+        for (const SourceRegion& r : proj.regions) e.regions.push_back({r.kind, clip_convex(tri, r.planes)});
+        emit(e);
+    }
+    DomainMesh::Listener L;
+    if (watching()) {
+        L.on_split = [&](int parent, const std::vector<int>& kids, const Quadratic2& curve) {
+            Event e = make_event(EventKind::DomainSplit);
+            e.source = (int32_t)s; e.face = parent; e.faces = kids; e.curve = curve;
+            emit(e);
+        };
+        L.on_relabel = [&](int face, DomainLabel old, DomainLabel now) {
+            Event e = make_event(EventKind::DomainCreated);
+            e.source = (int32_t)s; e.face = face; e.label = now; e.old_label = old;
+            emit(e);
+        };
+        L.on_merge = [&](int kept, int removed) {
+            Event e = make_event(EventKind::DomainMerged);
+            e.source = (int32_t)s; e.face = kept; e.other = removed;
+            emit(e);
+        };
+    }
+    // A face whose largest value is below the source's smallest possible value over the face is
+    // out of its reach: d_T >= |c - T| - r on the disc (c, r) holding the face.
+    auto cull = [&](int f) {
+        const DomainMesh::Face& F = mesh_->faces()[f];
+        if (F.infinite || !(F.max_value < HUGE_VAL)) return false;
+        Vec2 lo{HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL};
+        std::vector<int> hes = mesh_->face_half_edges(f);
+        const auto& V = mesh_->vertices();
+        const auto& H = mesh_->half_edges();
+        for (int h : hes) {
+            Vec2 p = V[H[h].origin].p;
+            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+        }
+        Vec2 c = 0.5 * (lo + hi);
+        double r2 = 0;
+        for (int h : hes) {
+            r2 = std::max(r2, norm2(V[H[h].origin].p - c));
+            const DomainMesh::Edge& E = mesh_->edges()[h >> 1];
+            if (!E.curve.straight()) {
+                Quadratic2 q;  // |p - c|^2
+                q.a = 1; q.c = 1; q.d = -c.x; q.e = -c.y; q.f = norm2(c);
+                r2 = std::max(r2, arc_interior_max(E.curve, E.z0, E.z1, q, nullptr));
+            }
+        }
+        double r = std::sqrt(r2) * (1 + 1e-9) + 1e-12;
+        double d = std::sqrt(source_distance2(frame_, sc, c));
+        return d > r && (d - r) * (d - r) > F.max_value * (1 + 1e-9);
+    };
+    mesh_->insert(proj, cull, watching() ? &L : nullptr);
+    if (validate_each_) {
+        std::string msg = validate();
+        if (!msg.empty()) throw std::logic_error("target " + std::to_string(target_) + ", after source " + std::to_string(s) + ": " + msg);
+    }
+    update_maximum();
+}
+
+void TargetSolver::update_maximum() {
+    const double sc2 = frame_.scale * frame_.scale;
+    candidates_ = mesh_->update_maxima();
+    double best = -HUGE_VAL;
+    Vec2 where;
+    for (const Candidate& c : candidates_) {
+        if (watching() && c.edge >= 0) {
+            Event e = make_event(EventKind::ArcMaximum);
+            e.face = -1; e.other = c.edge; e.point = c.p; e.world = frame_.to_world(c.p); e.value = c.value * sc2;
+            emit(e);
+        }
+        if (c.value > best) {
+            best = c.value;
+            where = c.p;
+            if (watching()) {
+                Event e = make_event(EventKind::MaximumRaised);
+                e.point = c.p; e.world = frame_.to_world(c.p); e.value = c.value * sc2;
+                emit(e);
+            }
+        }
+    }
+    double old = max_sq_;
+    max_sq_ = std::max(0.0, best) * sc2;
+    max_2d_ = where;
+    max_world_ = frame_.to_world(where);
+    if (max_sq_ < old && watching()) {
+        Event e = make_event(EventKind::SearchRadiusShrunk);
+        e.value = max_sq_; e.point = where; e.world = max_world_;
+        emit(e);
+    }
+}
+
+// A target with (nearly) no area is handled as its three edges: along a segment d^2 is the lower
+// envelope of convex pieces, whose maximum lies at a piece end or where two pieces cross. Every
+// such point is evaluated directly. The interior of a sliver is within its height of an edge, so
+// the result is short of the true maximum by at most that height (reported as slack()).
+void TargetSolver::degenerate_maximum() {
+    double best = -HUGE_VAL;
+    for (int k = 0; k < 3; ++k) {
+        Vec2 A = frame_.corners[k], D = frame_.corners[(k + 1) % 3] - A;
+        RationalCurve line;
+        line.n0 = A; line.n1 = D;
+        std::vector<double> ts{0.0, 1.0};
+        struct Piece { double lo, hi; Poly q; uint32_t s; };
+        std::vector<Piece> pieces;
+        for (uint32_t s : inserted_) {
+            SourceProjection proj = project_source(frame_, source_corners(s), s);
+            for (const SourceRegion& r : proj.regions) {
+                double lo = 0, hi = 1;
+                bool empty = false;
+                for (const HalfPlane& h : r.planes) {
+                    if (h.kind == HalfPlane::All) continue;
+                    if (h.kind == HalfPlane::None) { empty = true; break; }
+                    double a = dot(h.n, D), b = h.offset - dot(h.n, A);  // inside: t a >= b
+                    if (a > 0) lo = std::max(lo, b / a);
+                    else if (a < 0) hi = std::min(hi, b / a);
+                    else if (b > 0) empty = true;
+                }
+                if (empty || lo > hi) continue;
+                pieces.push_back({lo, hi, line.compose(r.poly), s});
+                ts.push_back(lo);
+                ts.push_back(hi);
+            }
+        }
+        for (size_t i = 0; i < pieces.size(); ++i)
+            for (size_t j = i + 1; j < pieces.size(); ++j) {
+                const Piece &p = pieces[i], &q = pieces[j];
+                if (p.s == q.s) continue;
+                double lo = std::max(p.lo, q.lo), hi = std::min(p.hi, q.hi);
+                if (lo > hi) continue;
+                for (double x : sign_change_roots(p.q + (-1.0) * q.q, lo, hi)) ts.push_back(x);
+            }
+        for (double t : ts) {
+            Vec2 p = A + std::min(1.0, std::max(0.0, t)) * D;
+            double v = direct_d2(p);
+            if (v > best) { best = v; max_2d_ = p; }
+        }
+    }
+    double old = max_sq_;
+    max_sq_ = best * frame_.scale * frame_.scale;
+    max_world_ = frame_.to_world(max_2d_);
+    if (max_sq_ < old && watching()) {
+        Event e = make_event(EventKind::SearchRadiusShrunk);
+        e.value = max_sq_; e.point = max_2d_; e.world = max_world_;
+        emit(e);
+    }
+}
+
+double TargetSolver::slack() const {
+    if (!frame_.degenerate) return 0;
+    double h = 0;  // the height of the sliver over its longest edge (world units)
+    for (const Vec2& c : frame_.corners) h = std::max(h, std::fabs(c.y));
+    return h * frame_.scale;
+}
+
+double TargetSolver::direct_d2(Vec2 p) const {
+    double best = HUGE_VAL;
+    for (uint32_t s : inserted_) best = std::min(best, source_distance2(frame_, source_corners(s), p));
+    return best;
+}
+
+void TargetSolver::finish() {
+    const double sc2 = frame_.scale * frame_.scale;
+    if (mesh_ && !inserted_.empty() && !stopped_early_) {
+        // The number comes from direct evaluation of the best candidates (design notes: extra
+        // candidates never hurt, and a face with a wrong polynomial cannot inflate the result).
+        std::vector<const Candidate*> order;
+        for (const Candidate& c : candidates_) order.push_back(&c);
+        std::sort(order.begin(), order.end(), [](auto* a, auto* b) { return a->value > b->value; });
+        double top = order.empty() ? 0 : order[0]->value, best = -HUGE_VAL;
+        Vec2 where = max_2d_;
+        for (size_t i = 0; i < order.size(); ++i) {
+            if (i >= 8 && order[i]->value < top - 1e-6 * std::max(top, 1e-300)) break;
+            double v = direct_d2(order[i]->p);
+            if (v > best) { best = v; where = order[i]->p; }
+        }
+        max_sq_ = std::max(0.0, best) * sc2;
+        max_2d_ = where;
+        max_world_ = frame_.to_world(where);
+    }
+    if (inserted_.empty()) max_sq_ = HUGE_VAL;  // B is empty: nothing is near
+    if (watching()) {
+        while (!queue_.empty()) {
+            QueueItem q = queue_.top();
+            queue_.pop();
+            Event e = make_event(EventKind::VoxelCulled);
+            e.voxel = (long long)q.voxel; e.distance = std::sqrt(q.d2);
+            emit(e);
+            voxel_log_.push_back({q.voxel, 3});
+        }
+        Event e = make_event(EventKind::TargetFinished);
+        e.point = max_2d_; e.world = max_world_; e.value = max_sq_;
+        emit(e);
+    }
+    phase_ = Phase::Done;
+}
+
+bool TargetSolver::step() {
+    if (phase_ == Phase::Done) return false;
+    if (phase_ == Phase::Begin) begin();
+    uint32_t s;
+    double dist;
+    size_t voxel;
+    if (stop_below_ >= 0 && max_sq_ < stop_below_) { stopped_early_ = true; finish(); return false; }
+    if (!next_source(s, dist, voxel)) { finish(); return false; }
+    insert(s, dist, voxel);
+    return true;
+}
+
+const Event* TargetSolver::step_event() {
+    recording_ = true;
+    while (cursor_ >= log_.size()) {
+        if (phase_ == Phase::Done) return nullptr;
+        step();
+    }
+    return &log_[cursor_++];
+}
+
+void TargetSolver::run() {
+    while (step()) {}
+}
+
+std::string TargetSolver::validate() const {
+    if (!mesh_) return "";
+    std::string msg = mesh_->validate();
+    if (!msg.empty()) return msg;
+    const auto& F = mesh_->faces();
+    for (size_t f = 1; f < F.size(); ++f) {
+        if (!F[f].alive || F[f].infinite) continue;
+        Vec2 p;
+        if (!mesh_->interior_point((int)f, p)) continue;  // a sliver too thin to probe
+        double poly = F[f].poly(p), direct = direct_d2(p);
+        if (std::fabs(poly - direct) > 1e-7 * (1 + direct)) {
+            char buf[200];
+            std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): polynomial %.12g but d^2 = %.12g at (%.9g, %.9g)", f,
+                          F[f].label.source, region_name(F[f].label.region), poly, direct, p.x, p.y);
+            return buf;
+        }
+    }
+    return "";
+}
+
+}  // namespace hlens

@@ -1,0 +1,156 @@
+// One target triangle T' of A against the mesh B: Straub 2007 §3 for a single T'.
+//
+// Relevant source triangles come from the voxel grid (§3.2): voxels are visited outward from the
+// target's own voxels, nearest first; each source triangle found is inserted into the domain mesh
+// (§3.1); after every insertion d_max = max d^2 over T' is taken, and voxels farther than the
+// search radius sqrt(d_max) from the target's voxels are never visited.
+//
+// Use it whole (`run()`), one insertion at a time (`step()`), or one event at a time
+// (`step_event()`), reading the state in between. Observers see every event as it happens; with
+// none attached, no event is even built.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <queue>
+#include <string>
+#include <vector>
+
+#include "domain_mesh.h"
+#include "regions.h"
+#include "voxel_grid.h"
+
+namespace hlens {
+
+enum class EventKind : uint8_t {
+    TargetBegun,         // the target's frame is set up
+    VoxelVisited,        // a voxel within the search radius is visited (voxel, distance)
+    VoxelCulled,         // a voxel is left out: it lies beyond the search radius (voxel, distance)
+    SourceChosen,        // a source triangle will be inserted (source, voxel, distance)
+    SourceCulled,        // a source triangle of a visited voxel is farther than the search radius
+    RegionsProjected,    // the seven regions of the source, clipped to T' (regions)
+    DomainSplit,         // a domain was cut by a region boundary or a conic (face, faces, curve)
+    DomainCreated,       // a piece of a domain now belongs to the source (face, label, old_label)
+    DomainMerged,        // two neighbouring domains with equal polynomials became one (face, other)
+    ArcMaximum,          // a local maximum of d^2 in the interior of a conic arc (edge, point, value)
+    MaximumRaised,       // the running maximum of d^2 over T' was raised by a candidate (point, value)
+    SearchRadiusShrunk,  // sqrt(d_max) went down (radius, value)
+    TargetFinished,      // no voxel within the search radius is left (point, value)
+};
+const char* event_name(EventKind k);
+
+struct RegionPolygon { Region kind; std::vector<Vec2> polygon; };
+
+struct Event {
+    EventKind kind;
+    long step = 0;            // position in the target's event stream, from 0
+    int insertion = 0;        // number of sources inserted when it happened
+    long long voxel = -1;
+    double distance = 0;      // voxel or source distance to the target (world units)
+    int32_t source = -1;
+    int face = -1, other = -1;
+    std::vector<int> faces;
+    DomainLabel label, old_label;
+    Quadratic2 curve;
+    std::vector<RegionPolygon> regions;
+    Vec2 point;               // in the target's frame
+    Vec3 world;               // the same point in world coordinates
+    double value = 0;         // d^2 (world units squared)
+    double radius = 0;        // search radius (world units)
+};
+
+class TargetSolver {
+public:
+    // Target `target` of mesh `side` of the grid against the other mesh.
+    TargetSolver(const VoxelGrid& grid, int side, uint32_t target);
+    ~TargetSolver();
+    TargetSolver(const TargetSolver&) = delete;
+    TargetSolver& operator=(const TargetSolver&) = delete;
+
+    // Observers (chainable). `record_events` keeps the whole stream for step_event() and tracing.
+    TargetSolver& on_event(std::function<void(const Event&)> cb);
+    TargetSolver& record_events(bool on = true);
+    // Stop early once d_max drops below `bound_sq` (the target cannot reach it): fast mode.
+    TargetSolver& stop_below(double bound_sq);
+    // Check the domain mesh's invariants after every insertion (slow; for tests).
+    TargetSolver& validate_each_insertion(bool on = true);
+
+    bool step();                     // insert the next source; false once finished
+    const Event* step_event();       // advance to the next event (nullptr once finished)
+    void run();
+    bool finished() const { return phase_ == Phase::Done; }
+
+    // State, readable between steps.
+    const TargetFrame& frame() const { return frame_; }
+    const DomainMesh* domain_mesh() const { return mesh_.get(); }   // null for a degenerate target
+    double max_sq() const { return max_sq_; }         // current max of d^2 over T' (world units)
+    Vec3 max_point() const { return max_world_; }
+    Vec2 max_point_2d() const { return max_2d_; }
+    double search_radius() const;                     // sqrt(max_sq), +inf before the first source
+    int insertions() const { return (int)inserted_.size(); }
+    const std::vector<uint32_t>& inserted_sources() const { return inserted_; }
+    const std::vector<Event>& events() const { return log_; }
+    const std::vector<Candidate>& candidates() const { return candidates_; }
+    bool stopped_early() const { return stopped_early_; }
+    // For a sliver target (handled as its three edges): how far the true maximum distance may lie
+    // above max_sq()'s root. Zero for every other target.
+    double slack() const;
+    // Voxel states for display: 0 unseen, 1 pending, 2 visited, 3 culled.
+    const std::vector<std::pair<size_t, uint8_t>>& voxel_states() const { return voxel_log_; }
+    std::string validate() const;     // domain mesh invariants, plus face polynomials against brute force
+
+    // The exact squared distance from a point of T' (frame coordinates) to the inserted sources.
+    double direct_d2(Vec2 p) const;
+    uint32_t target() const { return target_; }
+    std::array<Vec3, 3> source_corners(uint32_t s) const;
+
+private:
+    enum class Phase { Begin, NextSource, Done };
+    struct QueueItem { double d2; size_t voxel; bool operator<(const QueueItem& o) const { return d2 > o.d2; } };
+
+    void emit(Event e);
+    bool watching() const { return !callbacks_.empty() || recording_; }
+    void begin();
+    bool next_source(uint32_t& s, double& dist, size_t& voxel);
+    void insert(uint32_t s, double dist, size_t voxel);
+    void update_maximum();
+    void finish();
+    double voxel_distance2(size_t v) const;
+    void degenerate_maximum();
+
+    const VoxelGrid& grid_;
+    int side_;
+    uint32_t target_;
+    std::array<Vec3, 3> corners_;
+    TargetFrame frame_;
+    std::unique_ptr<DomainMesh> mesh_;
+    Phase phase_ = Phase::Begin;
+
+    std::vector<std::function<void(const Event&)>> callbacks_;
+    bool recording_ = false, validate_each_ = false;
+    std::vector<Event> log_;
+    size_t cursor_ = 0;
+    long next_step_ = 0;
+
+    std::vector<std::array<int, 3>> target_voxels_;
+    std::priority_queue<QueueItem> queue_;
+    std::vector<size_t> seen_voxels_;   // sorted insertion not needed: small; use a hash set below
+    std::vector<uint32_t> pending_sources_;
+    std::vector<double> pending_dist_;
+    size_t pending_voxel_ = 0;
+    double pending_voxel_dist_ = 0;
+    std::vector<uint32_t> inserted_;
+    std::vector<std::pair<size_t, uint8_t>> voxel_log_;
+    struct Seen;
+    std::unique_ptr<Seen> seen_;
+
+    double max_sq_ = HUGE_VAL;        // world units
+    Vec2 max_2d_;
+    Vec3 max_world_;
+    double stop_below_ = -1;
+    bool stopped_early_ = false;
+    std::vector<Candidate> candidates_;
+};
+
+}  // namespace hlens

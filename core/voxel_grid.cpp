@@ -1,0 +1,244 @@
+#include "voxel_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "point_triangle.h"
+
+namespace hlens {
+
+bool triangle_box_overlap(const Vec3& bc, const Vec3& h, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 v[3] = {a - bc, b - bc, c - bc};
+    for (int i = 0; i < 3; ++i)  // box face normals = the bounding boxes overlap
+        if (std::min({v[0][i], v[1][i], v[2][i]}) > h[i] || std::max({v[0][i], v[1][i], v[2][i]}) < -h[i])
+            return false;
+    // Projections of all three corners on each axis: a zero axis gives 0 vs radius 0, which never separates.
+    auto separates = [&](const Vec3& ax) {
+        double p0 = dot(ax, v[0]), p1 = dot(ax, v[1]), p2 = dot(ax, v[2]);
+        double r = h.x * std::fabs(ax.x) + h.y * std::fabs(ax.y) + h.z * std::fabs(ax.z);
+        return std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r;
+    };
+    const Vec3 e[3] = {v[1] - v[0], v[2] - v[1], v[0] - v[2]};
+    for (const Vec3& d : e)  // the nine cross products (unit axis x edge)
+        if (separates({0, -d.z, d.y}) || separates({d.z, 0, -d.x}) || separates({-d.y, d.x, 0})) return false;
+    return !separates(cross(e[0], e[1]));  // triangle normal
+}
+
+VoxelGrid::VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double k) {
+    mesh_[0] = &a;
+    mesh_[1] = &b;
+    if (!(k > 0)) k = 1;
+    Box3 box = a.bounds();
+    box.add(b.bounds());
+    const double nm = double(a.num_triangles() + b.num_triangles());
+    if (box.empty()) {
+        origin = {0, 0, 0};
+        voxel_size = 1;
+    } else {
+        Vec3 ext = box.extent();
+        double diag = norm(ext), cap = 8 * nm + 64;
+        double s = std::sqrt(2 * k * (ext.x * ext.y + ext.x * ext.z + ext.y * ext.z) / nm);
+        // A box that is (nearly) a line has ~zero area: size voxels along its length instead. The
+        // diag/cap floor keeps the counts below finite before the cap loop.
+        s = std::max({s, k * diag / nm, diag / cap});
+        if (!(s > 0)) s = 1;  // a single point
+        double n[3];
+        for (;;) {
+            for (int i = 0; i < 3; ++i) n[i] = std::max(1.0, std::ceil(ext[i] / s));
+            double count = n[0] * n[1] * n[2];
+            if (count <= cap) break;
+            s *= std::max(1.0001, std::cbrt(count / cap));
+        }
+        nx = int(n[0]); ny = int(n[1]); nz = int(n[2]);
+        voxel_size = s;
+        // Centre the mesh in the grid, so a flat mesh lies mid-layer rather than on voxel faces.
+        for (int i = 0; i < 3; ++i) origin[i] = box.lo[i] - 0.5 * (n[i] * s - ext[i]);
+    }
+    Vec3 far = origin + Vec3(nx, ny, nz) * voxel_size;
+    double M = std::max({std::fabs(origin.x), std::fabs(origin.y), std::fabs(origin.z), std::fabs(far.x),
+                         std::fabs(far.y), std::fabs(far.z)});
+    // Relative to the voxel (touching faces go to both voxels) plus the rounding of coordinates of size M.
+    margin_ = 1e-9 * voxel_size + 4e-15 * M;
+
+    const size_t nv = num_voxels();
+    for (int side = 0; side < 2; ++side) {  // two passes: count, then fill
+        std::vector<size_t>& offs = offs_[side];
+        offs.assign(nv + 1, 0);
+        for (uint32_t t = 0; t < mesh_[side]->num_triangles(); ++t)
+            for_each_voxel_of(side, t, [&](size_t v) { ++offs[v + 1]; });
+        for (size_t v = 0; v < nv; ++v) offs[v + 1] += offs[v];
+        items_[side].resize(offs[nv]);
+        std::vector<size_t> pos(offs.begin(), offs.end() - 1);
+        for (uint32_t t = 0; t < mesh_[side]->num_triangles(); ++t)
+            for_each_voxel_of(side, t, [&](size_t v) { items_[side][pos[v]++] = t; });
+    }
+    // Occupancy pyramid for far queries.
+    pyramid_.push_back({nx, ny, nz, {}});
+    for (int side = 0; side < 2; ++side) {
+        pyramid_[0].occ[side].resize(nv);
+        for (size_t v = 0; v < nv; ++v) pyramid_[0].occ[side][v] = offs_[side][v + 1] > offs_[side][v];
+    }
+    while (pyramid_.back().nx > 1 || pyramid_.back().ny > 1 || pyramid_.back().nz > 1) {
+        const Level& f = pyramid_.back();
+        Level c{(f.nx + 1) / 2, (f.ny + 1) / 2, (f.nz + 1) / 2, {}};
+        for (int side = 0; side < 2; ++side) {
+            c.occ[side].assign(size_t(c.nx) * c.ny * c.nz, 0);
+            for (int k = 0; k < f.nz; ++k)
+                for (int j = 0; j < f.ny; ++j)
+                    for (int i = 0; i < f.nx; ++i)
+                        if (f.occ[side][(size_t(k) * f.ny + j) * f.nx + i])
+                            c.occ[side][(size_t(k / 2) * c.ny + j / 2) * c.nx + i / 2] = 1;
+        }
+        pyramid_.push_back(std::move(c));
+    }
+}
+
+std::array<int, 3> VoxelGrid::coords(size_t idx) const {
+    return {int(idx % nx), int((idx / nx) % ny), int(idx / (size_t(nx) * ny))};
+}
+
+Box3 VoxelGrid::voxel_box(size_t idx) const {
+    auto c = coords(idx);
+    Box3 b;
+    b.lo = origin + Vec3(c[0], c[1], c[2]) * voxel_size;
+    b.hi = b.lo + Vec3(voxel_size, voxel_size, voxel_size);
+    return b;
+}
+
+std::array<int, 3> VoxelGrid::locate(const Vec3& p) const {
+    const int n[3] = {nx, ny, nz};
+    std::array<int, 3> r;
+    for (int i = 0; i < 3; ++i) {
+        double f = std::floor((p[i] - origin[i]) / voxel_size);
+        r[i] = f < 0 ? 0 : (f >= n[i] - 1 ? n[i] - 1 : int(f));  // also maps NaN to 0
+    }
+    return r;
+}
+
+template <class F>
+void VoxelGrid::for_each_voxel_of(int side, uint32_t t, F&& f) const {
+    auto [a, b, c] = mesh_[side]->corners(t);
+    Box3 tb = mesh_[side]->triangle_bounds(t);
+    const int n[3] = {nx, ny, nz};
+    int lo[3], hi[3];
+    for (int i = 0; i < 3; ++i) {
+        double l = std::floor((tb.lo[i] - margin_ - origin[i]) / voxel_size);
+        double h = std::floor((tb.hi[i] + margin_ - origin[i]) / voxel_size);
+        lo[i] = int(std::max(0.0, std::min(l, n[i] - 1.0)));
+        hi[i] = int(std::max(0.0, std::min(h, n[i] - 1.0)));
+    }
+    if (lo[0] == hi[0] && lo[1] == hi[1] && lo[2] == hi[2]) { f(index(lo[0], lo[1], lo[2])); return; }
+    const double hs = 0.5 * voxel_size + margin_;
+    const Vec3 half(hs, hs, hs);
+    for (int k = lo[2]; k <= hi[2]; ++k)
+        for (int j = lo[1]; j <= hi[1]; ++j)
+            for (int i = lo[0]; i <= hi[0]; ++i) {
+                Vec3 centre = origin + Vec3(i + 0.5, j + 0.5, k + 0.5) * voxel_size;
+                if (triangle_box_overlap(centre, half, a, b, c)) f(index(i, j, k));
+            }
+}
+
+std::vector<size_t> VoxelGrid::voxels_of_triangle(int side, uint32_t t) const {
+    std::vector<size_t> r;
+    for_each_voxel_of(side, t, [&](size_t v) { r.push_back(v); });
+    return r;
+}
+
+static double point_box_distance2(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) {
+        double g = std::max({0.0, lo[i] - p[i], p[i] - hi[i]});
+        d2 += g * g;
+    }
+    return d2;
+}
+
+VoxelGrid::Nearest VoxelGrid::nearest(int side, const Vec3& p, uint32_t hint) const {
+    const TriangleMesh& M = *mesh_[side];
+    Nearest best{UINT32_MAX, p, std::numeric_limits<double>::infinity()};
+    if (M.triangles.empty()) return best;
+    auto consider = [&](uint32_t t) {
+        auto [a, b, c] = M.corners(t);
+        if (point_box_distance2(p, vmin(a, vmin(b, c)), vmax(a, vmax(b, c))) > best.dist2) return;
+        ClosestPoint cp = closest_point_on_triangle(p, a, b, c);
+        if (cp.dist2 < best.dist2 || (cp.dist2 == best.dist2 && t < best.triangle)) best = {t, cp.point, cp.dist2};
+    };
+    if (hint < M.num_triangles()) consider(hint);
+
+    const auto c0 = locate(p);
+    const int n[3] = {nx, ny, nz};
+    const double s = voxel_size, m = margin_;
+    const Vec3 glo = origin - Vec3(m, m, m), ghi = origin + Vec3(nx, ny, nz) * s + Vec3(m, m, m);
+    auto visit = [&](int i, int j, int k) {
+        Vec3 lo = origin + Vec3(i, j, k) * s - Vec3(m, m, m);
+        if (point_box_distance2(p, lo, lo + Vec3(s + 2 * m, s + 2 * m, s + 2 * m)) > best.dist2) return;
+        size_t v = index(i, j, k);
+        for (const uint32_t* t = begin(side, v); t != end(side, v); ++t) consider(*t);
+    };
+    constexpr int kShells = 2;  // shells 0..kShells settle queries near the mesh
+    for (int R = 0; R <= kShells; ++R) {
+        if (R > 0) {
+            // Voxels at Chebyshev distance >= R from c0 lie in the six slabs of the grid box beyond the
+            // cube of radius R-1: their true distance from p bounds everything not yet visited.
+            double lb2 = std::numeric_limits<double>::infinity();
+            for (int ax = 0; ax < 3; ++ax) {
+                if (c0[ax] + R <= n[ax] - 1) {
+                    Vec3 lo = glo;
+                    lo[ax] = origin[ax] + (c0[ax] + R) * s - m;
+                    lb2 = std::min(lb2, point_box_distance2(p, lo, ghi));
+                }
+                if (c0[ax] - R >= 0) {
+                    Vec3 hi = ghi;
+                    hi[ax] = origin[ax] + (c0[ax] - R + 1) * s + m;
+                    lb2 = std::min(lb2, point_box_distance2(p, glo, hi));
+                }
+            }
+            if (lb2 == std::numeric_limits<double>::infinity() || lb2 > best.dist2) return best;  // none left, or too far
+        }
+        const int k0 = std::max(0, c0[2] - R), k1 = std::min(nz - 1, c0[2] + R);
+        const int j0 = std::max(0, c0[1] - R), j1 = std::min(ny - 1, c0[1] + R);
+        for (int k = k0; k <= k1; ++k)
+            for (int j = j0; j <= j1; ++j) {
+                if (std::abs(k - c0[2]) == R || std::abs(j - c0[1]) == R) {
+                    for (int i = std::max(0, c0[0] - R); i <= std::min(nx - 1, c0[0] + R); ++i) visit(i, j, k);
+                } else {
+                    if (c0[0] - R >= 0) visit(c0[0] - R, j, k);
+                    if (R > 0 && c0[0] + R <= nx - 1) visit(c0[0] + R, j, k);
+                }
+            }
+    }
+
+    // Not settled: best-first over the occupancy pyramid, nearest cell first, skipping the shells done.
+    struct Cell { double d2; int level, i, j, k; };
+    auto farther = [](const Cell& x, const Cell& y) { return x.d2 > y.d2; };
+    std::vector<Cell> heap;
+    auto push = [&](int level, int i, int j, int k) {
+        const Level& L = pyramid_[level];
+        if (!L.occ[side][(size_t(k) * L.ny + j) * L.nx + i]) return;
+        if (level == 0 && std::abs(i - c0[0]) <= kShells && std::abs(j - c0[1]) <= kShells &&
+            std::abs(k - c0[2]) <= kShells)
+            return;
+        Vec3 lo = origin + Vec3(i, j, k) * (s * (1 << level)) - Vec3(m, m, m);
+        Vec3 hi = vmin(origin + Vec3(i + 1, j + 1, k + 1) * (s * (1 << level)), origin + Vec3(nx, ny, nz) * s) + Vec3(m, m, m);
+        double d2 = point_box_distance2(p, lo, hi);
+        if (d2 > best.dist2) return;
+        heap.push_back({d2, level, i, j, k});
+        std::push_heap(heap.begin(), heap.end(), farther);
+    };
+    push(int(pyramid_.size()) - 1, 0, 0, 0);
+    while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end(), farther);
+        Cell c = heap.back();
+        heap.pop_back();
+        if (c.d2 > best.dist2) break;  // every cell left is farther still
+        if (c.level == 0) { visit(c.i, c.j, c.k); continue; }
+        const Level& F = pyramid_[c.level - 1];
+        for (int k = 2 * c.k; k <= std::min(2 * c.k + 1, F.nz - 1); ++k)
+            for (int j = 2 * c.j; j <= std::min(2 * c.j + 1, F.ny - 1); ++j)
+                for (int i = 2 * c.i; i <= std::min(2 * c.i + 1, F.nx - 1); ++i) push(c.level - 1, i, j, k);
+    }
+    return best;
+}
+
+}  // namespace hlens
