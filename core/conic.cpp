@@ -6,6 +6,16 @@
 
 namespace hlens {
 
+Interval Quadratic2::range(Vec2 lo, Vec2 hi) const {
+    Interval x{lo.x, hi.x}, y{lo.y, hi.y};
+    Interval r = sq(x) * a + (x * y) * (2 * b) + sq(y) * c + x * (2 * d) + y * (2 * e);
+    r.lo += f;
+    r.hi += f;
+    // widen by rounding of the evaluation
+    double m = 1e-14 * (scale() * (1 + norm2(lo) + norm2(hi)));
+    return {r.lo - m, r.hi + m};
+}
+
 double Quadratic2::scale() const {
     return std::max({std::fabs(a), std::fabs(b), std::fabs(c), std::fabs(d), std::fabs(e), std::fabs(f)});
 }
@@ -43,6 +53,14 @@ Poly RationalCurve::weight() const {
 }
 
 Poly RationalCurve::compose(const Quadratic2& q) const {
+    if (straight() && w0 == 1) {  // most arcs: q(n0 + z n1) directly
+        Poly r;
+        r.deg = 4;
+        r.c[2] = q.a * n1.x * n1.x + 2 * q.b * n1.x * n1.y + q.c * n1.y * n1.y;
+        r.c[1] = 2 * (q.a * n0.x * n1.x + q.b * (n0.x * n1.y + n0.y * n1.x) + q.c * n0.y * n1.y + q.d * n1.x + q.e * n1.y);
+        r.c[0] = q(n0);
+        return r;
+    }
     Poly X, Y, W = weight();
     X.deg = Y.deg = 2;
     X.c[0] = n0.x; X.c[1] = n1.x; X.c[2] = n2.x;

@@ -6,6 +6,7 @@
 // kind, so that substituting it into a quadratic gives a quartic and its maxima a quintic
 // (design notes, "Where the maximum is").
 #pragma once
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,22 @@
 #include "vec.h"
 
 namespace hlens {
+
+// A closed interval, for conservative bounds of a quadratic over a box.
+struct Interval {
+    double lo, hi;
+    Interval operator+(const Interval& o) const { return {lo + o.lo, hi + o.hi}; }
+    Interval operator*(double s) const { return s >= 0 ? Interval{lo * s, hi * s} : Interval{hi * s, lo * s}; }
+    Interval operator*(const Interval& o) const {
+        double p[4] = {lo * o.lo, lo * o.hi, hi * o.lo, hi * o.hi};
+        return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
+    }
+};
+inline Interval sq(const Interval& x) {
+    if (x.lo >= 0) return {x.lo * x.lo, x.hi * x.hi};
+    if (x.hi <= 0) return {x.hi * x.hi, x.lo * x.lo};
+    return {0, std::max(x.lo * x.lo, x.hi * x.hi)};
+}
 
 // q(x,y) = a x^2 + 2 b x y + c y^2 + 2 d x + 2 e y + f
 struct Quadratic2 {
@@ -24,6 +41,7 @@ struct Quadratic2 {
     Quadratic2 operator-(const Quadratic2& o) const { return {a - o.a, b - o.b, c - o.c, d - o.d, e - o.e, f - o.f}; }
     Quadratic2 operator*(double s) const { return {a * s, b * s, c * s, d * s, e * s, f * s}; }
     double scale() const;  // largest coefficient magnitude
+    Interval range(Vec2 lo, Vec2 hi) const;  // contains q over the box [lo, hi]
     bool is_linear() const { return a == 0 && b == 0 && c == 0; }
     std::string to_string() const;
 };

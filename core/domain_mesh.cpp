@@ -7,7 +7,10 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <set>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace hlens {
 
@@ -242,6 +245,27 @@ bool DomainMesh::point_in_face(int f, Vec2 p) const {
     return n & 1;
 }
 
+Box2 DomainMesh::face_box(int f) const {
+    Box2 b;
+    for (int h : faces_[f].loops.empty() ? std::vector<int>{} : face_half_edges(f)) {
+        b.add(vertices_[half_[h].origin].p);
+        const Edge& E = edges_[h >> 1];
+        if (E.curve.straight()) continue;
+        // A curved arc may bulge past its ends: add its extreme points in x and in y.
+        Poly W = E.curve.weight();
+        for (int axis = 0; axis < 2; ++axis) {
+            Poly N;
+            N.deg = 2;
+            N.c[0] = axis ? E.curve.n0.y : E.curve.n0.x;
+            N.c[1] = axis ? E.curve.n1.y : E.curve.n1.x;
+            N.c[2] = axis ? E.curve.n2.y : E.curve.n2.x;
+            Poly d = N.derivative() * W + (-1.0) * (N * W.derivative());
+            for (double z : sign_change_roots(d, E.z0, E.z1)) b.add(E.curve(z));
+        }
+    }
+    return b;
+}
+
 bool DomainMesh::near_boundary(int f, Vec2 p, double tol) const {
     for (int h : face_half_edges(f)) {
         const Edge& E = edges_[h >> 1];
@@ -326,10 +350,10 @@ int DomainMesh::split_edge(int e, double z) {
     return v;
 }
 
-int DomainMesh::find_wedge(int face, int v, Vec2 dir, Vec2 dir2) const {
+int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2) const {
     std::vector<int> cands;
-    for (size_t h = 0; h < half_.size(); ++h)
-        if (half_[h].face == face && half_[h].next >= 0 && edges_[h >> 1].alive && target((int)h) == v) cands.push_back((int)h);
+    for (int h : hes)
+        if (half_[h].face == face && half_[h].next >= 0 && edges_[h >> 1].alive && target(h) == v) cands.push_back(h);
     if (cands.size() == 1) return cands[0];
     if (cands.empty()) return -1;
     double ad = std::atan2(dir.y, dir.x);
@@ -351,7 +375,7 @@ int DomainMesh::find_wedge(int face, int v, Vec2 dir, Vec2 dir2) const {
     return cands[0];
 }
 
-void DomainMesh::insert_path(int face, const std::vector<int>& verts, const std::vector<int>& es, bool closed_new) {
+void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& es, bool closed_new) {
     assert(verts.size() == es.size() + 1);
     size_t n = es.size();
     for (size_t k = 0; k < n; ++k) {
@@ -377,7 +401,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& verts, const std:
     int a = verts.front(), b = verts.back();
     // An end at a vertex with no edge yet (the centre of a line pair) becomes the tip of a
     // dangling path, which later paths to the same vertex attach to.
-    int hin = find_wedge(face, a, dir_out(first), sec_out(first));
+    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first));
     if (hin < 0) {
         half_[first + 1].next = first; half_[first].prev = first + 1;
     } else {
@@ -385,7 +409,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& verts, const std:
         half_[hin].next = first; half_[first].prev = hin;
         half_[first + 1].next = hout; half_[hout].prev = first + 1;
     }
-    int hin2 = find_wedge(face, b, dir_out(last + 1), sec_out(last + 1));
+    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1));
     if (hin2 < 0) {
         half_[last].next = last + 1; half_[last + 1].prev = last;
     } else {
@@ -399,11 +423,12 @@ std::vector<int> DomainMesh::rebuild_faces(const std::vector<int>& hes, int reus
     Face proto = faces_[reuse];
     std::vector<int> cycles;
     std::vector<double> areas;
-    std::vector<char> seen(half_.size(), 0);
+    std::unordered_set<int> seen;
+    seen.reserve(hes.size() * 2);
     for (int h0 : hes) {
-        if (seen[h0]) continue;
+        if (seen.count(h0)) continue;
         int h = h0, guard = 0;
-        do { seen[h] = 1; h = half_[h].next; } while (h != h0 && ++guard < 1000000);
+        do { seen.insert(h); h = half_[h].next; } while (h != h0 && ++guard < 1000000);
         cycles.push_back(h0);
         areas.push_back(loop_area(h0));
     }
@@ -589,11 +614,18 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     double gs = g_in.scale();
     if (!(gs > 0)) return {{f, 0}};
     const Quadratic2 g = g_in * (1.0 / gs);
-    std::vector<char> zero(vertices_.size(), 0);
+    {
+        // Most faces lie wholly on one side: a conservative bound over the face's box says so.
+        Box2 b = face_box(f);
+        Interval r = g.range(b.lo, b.hi);
+        if (r.lo > kZero) return {{f, 1}};
+        if (r.hi < -kZero) return {{f, -1}};
+    }
+    std::vector<int> zero_list;  // vertices on the curve (few): a list, not a flag per vertex
     auto mark_zero = [&](int v) {
-        if ((int)zero.size() <= v) zero.resize(v + 1, 0);
-        zero[v] = 1;
+        if (std::find(zero_list.begin(), zero_list.end(), v) == zero_list.end()) zero_list.push_back(v);
     };
+    auto is_zero = [&](int v) { return std::find(zero_list.begin(), zero_list.end(), v) != zero_list.end(); };
 
     // 1. Split the boundary where g changes sign.
     std::vector<int> hes = face_half_edges(f);
@@ -630,7 +662,8 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     }
     // Each arc's side, as the signed distance-like value of g at its middle: the arc farthest
     // from the curve is the one whose side is certain.
-    std::vector<double> side(half_.size(), 0.0);
+    std::unordered_map<int, double> side;
+    side.reserve(hes.size() * 2);
     int npos = 0, nneg = 0;
     for (int h : hes) {
         const Edge& E = edges_[h >> 1];
@@ -642,8 +675,10 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     }
     auto decided_side = [&](const std::vector<int>& loop_hes) {
         double best = 0;
-        for (int h : loop_hes)
-            if (h < (int)side.size() && std::fabs(side[h]) > std::fabs(best)) best = side[h];
+        for (int h : loop_hes) {
+            auto it = side.find(h);
+            if (it != side.end() && std::fabs(it->second) > std::fabs(best)) best = it->second;
+        }
         return best;
     };
 
@@ -653,7 +688,7 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     std::vector<int> zverts;
     for (int h : hes) {
         int v = half_[h].origin;
-        if (v < (int)zero.size() && zero[v] && std::find(zverts.begin(), zverts.end(), v) == zverts.end()) zverts.push_back(v);
+        if (is_zero(v) && std::find(zverts.begin(), zverts.end(), v) == zverts.end()) zverts.push_back(v);
     }
     ConicDecomposition dec = decompose_conic(g);
     if (dec.type == ConicType::LinePair && dec.components.size() == 2) {
@@ -735,8 +770,8 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
         }
         verts.push_back(c.va >= 0 ? c.vb : start);
         if (c.va < 0 && pieces.size() < 2) { ++stats_.warnings; continue; }
-        insert_path(f, verts, es, c.va < 0);
         for (int e : es) { hes.push_back(2 * e); hes.push_back(2 * e + 1); }
+        insert_path(f, hes, verts, es, c.va < 0);
         ++stats_.splits;
     }
 
@@ -746,8 +781,10 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     for (int fid : fids) {
         int pos = 0, neg = 0;
         std::vector<int> fh = face_half_edges(fid);
-        for (int h : fh)
-            if (h < (int)side.size()) { pos += side[h] > 1e-6; neg += side[h] < -1e-6; }
+        for (int h : fh) {
+            auto it = side.find(h);
+            if (it != side.end()) { pos += it->second > 1e-6; neg += it->second < -1e-6; }
+        }
         if (pos > 0 && neg > 0) ++stats_.warnings;
         double best = decided_side(fh);
         int s = best > 0 ? 1 : (best < 0 ? -1 : 0);
@@ -792,6 +829,33 @@ void DomainMesh::insert(const SourceProjection& src, const std::function<bool(in
             }
     };
 
+    // Each region clipped to T': a face whose box misses it needs no cut for it, and a face whose
+    // box lies inside it (the region is convex) needs none either.
+    std::vector<std::vector<Vec2>> region_poly(R);
+    {
+        std::vector<Vec2> tri;
+        for (int h : face_half_edges(0)) tri.push_back(vertices_[half_[h].origin].p);
+        std::reverse(tri.begin(), tri.end());  // the outside loop runs clockwise
+        for (size_t k = 0; k < R; ++k) region_poly[k] = clip_convex(tri, src.regions[k].planes);
+    }
+    auto box_misses = [&](const Box2& b, size_t k) {
+        const std::vector<Vec2>& P = region_poly[k];
+        if (P.empty()) return true;
+        Box2 rb;
+        for (Vec2 p : P) rb.add(p);
+        const double m = 1e-9;
+        return rb.hi.x < b.lo.x - m || rb.lo.x > b.hi.x + m || rb.hi.y < b.lo.y - m || rb.lo.y > b.hi.y + m;
+    };
+    auto box_inside = [&](const Box2& b, size_t k) {
+        for (const HalfPlane& hp : src.regions[k].planes) {
+            if (hp.kind == HalfPlane::All) continue;
+            if (hp.kind == HalfPlane::None) return false;
+            for (Vec2 c : {b.lo, b.hi, Vec2{b.lo.x, b.hi.y}, Vec2{b.hi.x, b.lo.y}})
+                if (dot(hp.n, c) - hp.offset <= 1e-9) return false;
+        }
+        return true;
+    };
+
     for (int F : snapshot) {
         if (!faces_[F].alive) continue;
         if (cull && cull(F)) continue;
@@ -800,6 +864,10 @@ void DomainMesh::insert(const SourceProjection& src, const std::function<bool(in
             const SourceRegion& reg = src.regions[k];
             std::vector<int> inside;
             if (k + 1 == R) {
+                inside.swap(pending);
+            } else if (pending.size() == 1 && pending[0] == F && box_misses(face_box(F), k)) {
+                continue;
+            } else if (pending.size() == 1 && pending[0] == F && box_inside(face_box(F), k)) {
                 inside.swap(pending);
             } else {
                 std::vector<int> rest;
@@ -835,6 +903,22 @@ void DomainMesh::insert(const SourceProjection& src, const std::function<bool(in
 // ---------------------------------------------------------------- maxima
 
 double DomainMesh::edge_max(int e, const Quadratic2& q, Vec2* where) const {
+    const Edge& E = edges_[e];
+    if (E.max_cached && std::memcmp(&E.max_poly, &q, sizeof q) == 0 && E.max_z0 == E.z0 && E.max_z1 == E.z1) {
+        if (where) *where = E.max_point;
+        return E.max_value;
+    }
+    double v = edge_max_uncached(e, q, where ? where : &E.max_point);
+    E.max_cached = true;
+    E.max_poly = q;
+    E.max_z0 = E.z0;
+    E.max_z1 = E.z1;
+    E.max_value = v;
+    if (where) E.max_point = *where;
+    return v;
+}
+
+double DomainMesh::edge_max_uncached(int e, const Quadratic2& q, Vec2* where) const {
     const Edge& E = edges_[e];
     double z;
     double v = arc_interior_max(E.curve, E.z0, E.z1, q, &z);

@@ -9,6 +9,8 @@
 // Faces may have holes (a closed ellipse inside a domain). The plane is the target's own frame
 // (see regions.h): T' has unit size, so every tolerance here is relative.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -23,6 +25,11 @@ struct DomainLabel {
     int32_t source = -1;        // index of the source triangle in B; -1: no source inserted yet
     Region region = Region::abc;
     bool operator==(const DomainLabel& o) const { return source == o.source && region == o.region; }
+};
+
+struct Box2 {
+    Vec2 lo{HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL};
+    void add(Vec2 p) { lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}; hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)}; }
 };
 
 enum class ArcKind : uint8_t { TargetBoundary, RegionBoundary, Conic };
@@ -45,6 +52,11 @@ public:
         ArcKind kind = ArcKind::Conic;
         CurveKind curve_kind = CurveKind::Line;
         bool alive = true;
+        // Cache of the arc's interior maximum for one quadratic (faces rarely change).
+        mutable bool max_cached = false;
+        mutable Quadratic2 max_poly;
+        mutable double max_z0 = 0, max_z1 = 0, max_value = 0;
+        mutable Vec2 max_point;
     };
     struct HalfEdge { int origin = -1, next = -1, prev = -1, face = -1; };
     struct Face {
@@ -91,6 +103,7 @@ public:
     bool point_in_face(int f, Vec2 p) const;
     bool interior_point(int f, Vec2& out) const;     // some point strictly inside face f
     bool near_boundary(int f, Vec2 p, double tol) const;  // p within tol of face f's boundary
+    Box2 face_box(int f) const;                      // bounding box, bulging arcs included
     int face_at(Vec2 p) const;                       // the live inner face containing p, or -1
     std::vector<int> face_half_edges(int f) const;   // all half-edges of all loops of f
     std::vector<Vec2> sample_loop(int h, int per_arc) const;  // a polyline along a loop
@@ -115,12 +128,13 @@ private:
     int target(int h) const { return half_[h ^ 1].origin; }
     Vec2 he_point(int h, double s) const;            // s in [0,1] along the half-edge's direction
     Vec2 out_tangent(int h) const;                   // direction leaving origin(h)
-    int find_wedge(int face, int v, Vec2 dir, Vec2 dir2) const;
-    void insert_path(int face, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
+    int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2) const;
+    void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
     std::vector<int> rebuild_faces(const std::vector<int>& hes, int reuse);
     void remove_edge(int e);
     void dissolve_collinear_vertices();
     double edge_max(int e, const Quadratic2& q, Vec2* where) const;
+    double edge_max_uncached(int e, const Quadratic2& q, Vec2* where) const;
     bool polish_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& p) const;
     bool polish_arc_max(const Quadratic2& q, const Quadratic2& g, Vec2& p) const;
 };

@@ -195,27 +195,9 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
     auto cull = [&](int f) {
         const DomainMesh::Face& F = mesh_->faces()[f];
         if (F.infinite || !(F.max_value < HUGE_VAL)) return false;
-        Vec2 lo{HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL};
-        std::vector<int> hes = mesh_->face_half_edges(f);
-        const auto& V = mesh_->vertices();
-        const auto& H = mesh_->half_edges();
-        for (int h : hes) {
-            Vec2 p = V[H[h].origin].p;
-            lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-            hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-        }
-        Vec2 c = 0.5 * (lo + hi);
-        double r2 = 0;
-        for (int h : hes) {
-            r2 = std::max(r2, norm2(V[H[h].origin].p - c));
-            const DomainMesh::Edge& E = mesh_->edges()[h >> 1];
-            if (!E.curve.straight()) {
-                Quadratic2 q;  // |p - c|^2
-                q.a = 1; q.c = 1; q.d = -c.x; q.e = -c.y; q.f = norm2(c);
-                r2 = std::max(r2, arc_interior_max(E.curve, E.z0, E.z1, q, nullptr));
-            }
-        }
-        double r = std::sqrt(r2) * (1 + 1e-9) + 1e-12;
+        Box2 b = mesh_->face_box(f);
+        Vec2 c = 0.5 * (b.lo + b.hi);
+        double r = 0.5 * norm(b.hi - b.lo) * (1 + 1e-9) + 1e-12;
         double d = std::sqrt(source_distance2(frame_, sc, c));
         return d > r && (d - r) * (d - r) > F.max_value * (1 + 1e-9);
     };
