@@ -121,18 +121,30 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
         std::atomic<double> L{0.0};
         for (size_t v = 0; v < nv; ++v)
             if (used[v]) atomic_max(L, nearest_d2[v]);
-        // Upper bound per target: min over the corners' nearest triangles T of max_v |v - T|^2.
+        // Upper bound per target, over its four midpoint sub-triangles S: for any triangle T of B,
+        // max over S of d(., T) is at a corner of S (convexity), so
+        //   U = max_S min_{T near S} max_{corners v of S} |v - T|^2  >=  max over T' of d^2.
         std::vector<double> U(n, HUGE_VAL);
         parallel_for(n, threads, opt.cancel, [&](size_t t) {
             auto c = A.corners(t);
-            for (uint32_t v : A.triangles[t]) {
-                uint32_t s = nearest_tri[v];
-                if (s == UINT32_MAX) continue;
-                auto sc = B.corners(s);
-                double m = 0;
-                for (const Vec3& p : c) m = std::max(m, closest_point_on_triangle(p, sc[0], sc[1], sc[2]).dist2);
-                U[t] = std::min(U[t], m);
+            const Tri& f = A.triangles[t];
+            Vec3 p[6] = {c[0], c[1], c[2], 0.5 * (c[0] + c[1]), 0.5 * (c[1] + c[2]), 0.5 * (c[2] + c[0])};
+            uint32_t near[6] = {nearest_tri[f[0]], nearest_tri[f[1]], nearest_tri[f[2]], 0, 0, 0};
+            for (int k = 3; k < 6; ++k) near[k] = grid.nearest(1 - side, p[k], near[k - 3]).triangle;
+            static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+            double u = 0;
+            for (const auto& S : sub) {
+                double best = HUGE_VAL;
+                for (int i : S) {
+                    if (near[i] == UINT32_MAX) continue;
+                    auto sc = B.corners(near[i]);
+                    double m = 0;
+                    for (int j : S) m = std::max(m, closest_point_on_triangle(p[j], sc[0], sc[1], sc[2]).dist2);
+                    best = std::min(best, m);
+                }
+                u = std::max(u, best);
             }
+            U[t] = u;
         });
         std::vector<uint32_t> order(n);
         std::iota(order.begin(), order.end(), 0u);

@@ -67,7 +67,8 @@ double TargetSolver::voxel_distance2(size_t v) const {
     for (const auto& t : target_voxels_) {
         double d2 = 0;
         for (int i = 0; i < 3; ++i) {
-            double g = std::max(0, std::abs(c[i] - t[i]) - 1) * grid_.voxel_size;
+            // Triangles are listed in voxels enlarged by margin(): the gap shrinks by two of them.
+            double g = std::max(0.0, std::max(0, std::abs(c[i] - t[i]) - 1) * grid_.voxel_size - 2 * grid_.margin());
             d2 += g * g;
         }
         best = std::min(best, d2);
