@@ -368,6 +368,13 @@ const Event* TargetSolver::step_event() {
     return &log_[cursor_++];
 }
 
+std::unique_ptr<TargetSolver> TargetSolver::replay_to(const VoxelGrid& grid, int side, uint32_t target, long step) {
+    auto ts = std::make_unique<TargetSolver>(grid, side, target);
+    while (const Event* e = ts->step_event())
+        if (e->step >= step) break;
+    return ts;
+}
+
 void TargetSolver::run() {
     while (step()) {}
 }

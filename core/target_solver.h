@@ -76,6 +76,10 @@ public:
     // Check the domain mesh's invariants after every insertion (slow; for tests).
     TargetSolver& validate_each_insertion(bool on = true);
 
+    // Stepping back: a fresh solver for the same target, advanced to just after event `step`
+    // (the construction is deterministic, so replaying from the start gives the same state).
+    static std::unique_ptr<TargetSolver> replay_to(const VoxelGrid& grid, int side, uint32_t target, long step);
+
     bool step();                     // insert the next source; false once finished
     const Event* step_event();       // advance to the next event (nullptr once finished)
     void run();

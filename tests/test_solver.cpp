@@ -297,6 +297,18 @@ TEST(SolverSteps, EventsInOrderAndStateBetweenSteps) {
     }
     EXPECT_EQ(n, ev.size());
     EXPECT_DOUBLE_EQ(again.max_sq(), ts.max_sq());
+    // Stepping back by replay: the state after the k-th source_chosen's insertion matches a
+    // solver stepped k times.
+    for (const Event& e : ev)
+        if (e.kind == EventKind::SearchRadiusShrunk) {
+            auto back = TargetSolver::replay_to(grid, 0, 0, e.step);
+            TargetSolver fwd(grid, 0, 0);
+            for (int k = 0; k < e.insertion; ++k) fwd.step();
+            EXPECT_EQ(back->insertions(), e.insertion);
+            EXPECT_DOUBLE_EQ(back->max_sq(), fwd.max_sq());
+            EXPECT_DOUBLE_EQ(back->search_radius(), e.radius);
+            EXPECT_EQ(back->domain_mesh()->num_live_faces(), fwd.domain_mesh()->num_live_faces());
+        }
     EXPECT_NEAR(std::sqrt(ts.max_sq()), std::sqrt(grid.nearest(1, ts.max_point()).dist2), 1e-12);
 }
 

@@ -1,0 +1,131 @@
+// Benchmarks of the whole-mesh driver: paper mode against fast mode.
+//
+// Each pair is a shared mesh A and a copy B whose every vertex is moved along its vertex normal by a
+// deterministic pseudo-random offset in [-1, 1] * 1e-3 of the bounding-box diagonal, so the distance
+// is small but not trivial. Pairs:
+//   nefertiti  about 100k triangles each (minutes; not run in CI)
+//   spot       about 6k triangles each (seconds): hlens_bench --benchmark_filter=spot
+// Reported: wall time (one iteration), and counters distance, exact_targets (both directions),
+// triangles, and peak_MB: the peak resident set (VmHWM) of the run, reset before it when the kernel
+// allows (/proc/self/clear_refs), otherwise the process peak so far.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "hausdorff.h"
+#include "mesh_io.h"
+
+using namespace hlens;
+
+namespace {
+
+const std::string kShared = HLENS_SHARED_MESHES;
+
+uint64_t splitmix64(uint64_t x) {
+    x += 0x9E3779B97F4A7C15ull;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+    return x ^ (x >> 31);
+}
+
+// Moves every used vertex along its (area-weighted) normal by u * 1e-3 * diagonal, u in [-1, 1].
+TriangleMesh perturbed(const TriangleMesh& m) {
+    TriangleMesh out = m;
+    out.path = m.path + " (perturbed)";
+    std::vector<Vec3> normal(m.positions.size());
+    for (size_t t = 0; t < m.num_triangles(); ++t) {
+        auto c = m.corners(t);
+        Vec3 n = cross(c[1] - c[0], c[2] - c[0]);
+        for (uint32_t i : m.triangles[t]) normal[i] += n;
+    }
+    const double amplitude = 1e-3 * m.bounds().diagonal();
+    for (size_t v = 0; v < m.positions.size(); ++v) {
+        double len = norm(normal[v]);
+        if (!(len > 0)) continue;
+        double u = (double)(splitmix64(v) >> 11) * 0x1.0p-53 * 2.0 - 1.0;
+        out.positions[v] += (amplitude * u / len) * normal[v];
+    }
+    return out;
+}
+
+struct Pair {
+    TriangleMesh a, b;
+};
+
+// Loaded once per process and shared by both modes.
+const Pair* pair_for(const std::string& file) {
+    static std::map<std::string, std::unique_ptr<Pair>> cache;
+    auto it = cache.find(file);
+    if (it != cache.end()) return it->second.get();
+    std::unique_ptr<Pair> p;
+    try {
+        TriangleMesh a = load_mesh(kShared + "/" + file);
+        TriangleMesh b = perturbed(a);
+        p = std::make_unique<Pair>(Pair{std::move(a), std::move(b)});
+    } catch (const MeshError&) {
+        p = nullptr;
+    }
+    return (cache[file] = std::move(p)).get();
+}
+
+// The kernel resets VmHWM when "5" is written to clear_refs (Linux 4.0+).
+void reset_peak_memory() {
+    std::ofstream f("/proc/self/clear_refs");
+    if (f) f << "5";
+}
+
+double peak_memory_mb() {
+    std::ifstream f("/proc/self/status");
+    std::string line;
+    while (std::getline(f, line))
+        if (line.rfind("VmHWM:", 0) == 0) return std::strtod(line.c_str() + 6, nullptr) / 1024.0;  // kB
+    return 0;
+}
+
+void bench_pair(benchmark::State& state, const std::string& file, Mode mode) {
+    const Pair* p = pair_for(file);
+    if (!p) {
+        state.SkipWithError(("cannot load " + kShared + "/" + file).c_str());
+        return;
+    }
+    HausdorffOptions opt;
+    opt.mode = mode;
+    HausdorffResult r;
+    reset_peak_memory();
+    for (auto _ : state) {
+        r = hausdorff(p->a, p->b, opt);
+        benchmark::DoNotOptimize(r.hausdorff);
+    }
+    state.counters["peak_MB"] = peak_memory_mb();
+    state.counters["distance"] = r.hausdorff;
+    state.counters["exact_targets"] = (double)(r.a_to_b.exact_targets + r.b_to_a.exact_targets);
+    state.counters["triangles"] = (double)(p->a.num_triangles() + p->b.num_triangles());
+}
+
+void register_pair(const std::string& name, const std::string& file) {
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        benchmark::RegisterBenchmark((name + "/" + mode_name(mode)).c_str(),
+                                     [file, mode](benchmark::State& s) { bench_pair(s, file, mode); })
+            ->UseRealTime()
+            ->Unit(benchmark::kSecond)
+            ->Iterations(1);
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    register_pair("spot", "spot.obj");
+    register_pair("nefertiti", "nefertiti.obj");
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
