@@ -27,6 +27,7 @@
 
 #include "conic.h"
 #include "domain_mesh.h"
+#include "bounds.h"
 #include "hausdorff.h"
 #include "mesh.h"
 #include "mesh_io.h"
@@ -40,7 +41,7 @@ namespace {
 
 const char* kUsage =
     "usage:\n"
-    "  hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld]\n"
+    "  hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld] [--verify]\n"
     "  hlens-cli trace A B --target I [--json] [--no-weld]\n"
     "  hlens-cli --help | help\n"
     "\n"
@@ -52,6 +53,9 @@ const char* kUsage =
     "                cannot hold the maximum (same result)\n"
     "  --threads N   worker threads, N >= 1 (default: all cores)\n"
     "  --no-weld     keep vertices as read (default: merge vertices with identical coordinates)\n"
+    "  --verify      also bracket each one-sided distance independently, by Lipschitz subdivision of\n"
+    "                the measured mesh (to 1e-4 of the bounding-box diagonal), and check that the\n"
+    "                exact value lies in the bracket (exit code 3 if it does not)\n"
     "\n"
     "trace      run target triangle I of A against B and print every event of the solver as it\n"
     "           happens (one line each), then a final summary line\n"
@@ -59,7 +63,7 @@ const char* kUsage =
     "  --json        one JSON object per line\n"
     "\n"
     "formats: .obj .ply .stl .off .gltf .glb\n"
-    "exit codes: 0 success, 2 bad usage or bad input, 1 unexpected error\n";
+    "exit codes: 0 success, 2 bad usage or bad input, 3 --verify found a disagreement, 1 unexpected error\n";
 
 // Bad usage or bad input: exit code 2.
 struct UsageError : std::runtime_error {
@@ -195,7 +199,7 @@ void print_line(const std::string& s) {
 struct Args {
     std::string command;
     std::vector<std::string> files;
-    bool json = false, one_sided = false, weld = true;
+    bool json = false, one_sided = false, weld = true, verify = false;
     Mode mode = Mode::Fast;
     int threads = 0;          // 0: all cores
     long long target = -1;
@@ -242,6 +246,7 @@ Args parse_args(int argc, char** argv) {
         if (w == "--json") { no_value(); a.json = true; }
         else if (w == "--no-weld") { no_value(); a.weld = false; }
         else if (distance && w == "--one-sided") { no_value(); a.one_sided = true; }
+        else if (distance && w == "--verify") { no_value(); a.verify = true; }
         else if (distance && w == "--mode") {
             std::string m = take_value();
             if (m == "paper") a.mode = Mode::Paper;
@@ -365,17 +370,40 @@ int run_distance(const Args& args) {
     }
     bar.clear();
 
+    // --verify: an independent bracket of each one-sided distance (core/bounds.h, built on exact
+    // point-triangle distances only), which the exact value must lie in.
+    struct Check { LipschitzBound bound; bool ok; };
+    std::vector<Check> checks;
+    if (args.verify) {
+        VoxelGrid grid(A, B);
+        const double diag = std::max(A.bounds().diagonal(), B.bounds().diagonal());
+        for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
+            const OneSidedResult& o = side == 0 ? r.a_to_b : r.b_to_a;
+            LipschitzBound lb = lipschitz_bounds(side == 0 ? A : B, grid, side, 1e-4 * diag);
+            checks.push_back({lb, o.distance >= lb.lower - 1e-12 * diag && o.distance <= lb.upper + 1e-12 * diag});
+        }
+    }
+    const bool verified = std::all_of(checks.begin(), checks.end(), [](const Check& c) { return c.ok; });
+    auto with_check = [&](Value v, size_t i) {
+        if (i < checks.size())
+            v.add("verify", Value::object()
+                                .add("lower", Value::number(checks[i].bound.lower))
+                                .add("upper", Value::number(checks[i].bound.upper))
+                                .add("ok", Value::boolean(checks[i].ok)));
+        return v;
+    };
+
     if (args.json) {
         Value v = Value::object();
-        v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("a_to_b", one_sided_json(r.a_to_b));
-        if (!args.one_sided) v.add("b_to_a", one_sided_json(r.b_to_a)).add("hausdorff", Value::number(r.hausdorff));
+        v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("a_to_b", with_check(one_sided_json(r.a_to_b), 0));
+        if (!args.one_sided) v.add("b_to_a", with_check(one_sided_json(r.b_to_a), 1)).add("hausdorff", Value::number(r.hausdorff));
         v.add("seconds", Value::number(r.seconds))
             .add("mode", Value::string(mode_name(args.mode)))
             .add("threads", Value::integer(threads));
         std::string out;
         to_json(out, v);
         print_line(out);
-        return 0;
+        return verified ? 0 : 3;
     }
     print_mesh_summary("A", A);
     print_mesh_summary("B", B);
@@ -387,7 +415,10 @@ int run_distance(const Args& args) {
         std::printf("\nHausdorff distance = %s\n", g(r.hausdorff).c_str());
     }
     std::printf("\nmode %s, %d thread%s, %.3f s\n", mode_name(args.mode), threads, threads == 1 ? "" : "s", r.seconds);
-    return 0;
+    for (size_t i = 0; i < checks.size(); ++i)
+        std::printf("verify %s: Lipschitz bracket [%s, %s] %s\n", i == 0 ? "h(A,B)" : "h(B,A)", g(checks[i].bound.lower).c_str(),
+                    g(checks[i].bound.upper).c_str(), checks[i].ok ? "holds the exact value" : "DOES NOT hold the exact value");
+    return verified ? 0 : 3;
 }
 
 // ---------------------------------------------------------------- trace

@@ -19,6 +19,7 @@
 #include <string>
 
 #include "hausdorff.h"
+#include "target_solver.h"
 #include "mesh_io.h"
 
 using namespace hlens;
@@ -108,6 +109,28 @@ void bench_pair(benchmark::State& state, const std::string& file, Mode mode) {
     state.counters["triangles"] = (double)(p->a.num_triangles() + p->b.num_triangles());
 }
 
+// The cost of the observer hooks: the full construction of the first 300 targets of spot against
+// its perturbed copy, with no observer attached (no event is even built) and with one that only
+// counts events (every event is built and delivered).
+void bench_observer(benchmark::State& state, bool observe) {
+    const Pair* p = pair_for("spot.obj");
+    if (!p) {
+        state.SkipWithError("spot.obj not found");
+        return;
+    }
+    VoxelGrid grid(p->a, p->b);
+    long events = 0;
+    for (auto _ : state) {
+        for (uint32_t t = 0; t < 300; ++t) {
+            TargetSolver ts(grid, 0, t);
+            if (observe) ts.on_event([&](const Event&) { ++events; });
+            ts.run();
+            benchmark::DoNotOptimize(ts.max_sq());
+        }
+    }
+    state.counters["events_per_iteration"] = observe ? (double)events / state.iterations() : 0.0;
+}
+
 void register_pair(const std::string& name, const std::string& file) {
     for (Mode mode : {Mode::Paper, Mode::Fast}) {
         benchmark::RegisterBenchmark((name + "/" + mode_name(mode)).c_str(),
@@ -123,6 +146,8 @@ void register_pair(const std::string& name, const std::string& file) {
 int main(int argc, char** argv) {
     register_pair("spot", "spot.obj");
     register_pair("nefertiti", "nefertiti.obj");
+    benchmark::RegisterBenchmark("observer/none", [](benchmark::State& s) { bench_observer(s, false); })->Unit(benchmark::kMillisecond)->MinTime(2.0);
+    benchmark::RegisterBenchmark("observer/counting", [](benchmark::State& s) { bench_observer(s, true); })->Unit(benchmark::kMillisecond)->MinTime(2.0);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

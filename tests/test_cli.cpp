@@ -634,3 +634,22 @@ TEST_F(Cli, TraceDegenerateTarget) {
 }
 
 }  // namespace
+
+TEST_F(Cli, VerifyBracketsTheExactValue) {
+    // The Lipschitz bracket is computed independently of the domain meshes; the exact value must
+    // lie in it, and the bracket is no wider than its tolerance (1e-4 of the diagonal).
+    auto [a, b] = random_pair();
+    std::string j = run_json({"distance", a, b, "--json", "--verify"});
+    for (const char* dir : {"a_to_b", "b_to_a"}) {
+        SCOPED_TRACE(dir);
+        std::string d = sub(j, dir), v = sub(d, "verify");
+        double lo = num(v, "lower"), hi = num(v, "upper"), x = num(d, "distance");
+        EXPECT_LE(lo, x + 1e-12);
+        EXPECT_GE(hi, x - 1e-12);
+        EXPECT_LE(hi - lo, 2e-4 * 2.0);  // the grids span about 1.1 x 1.1 x 0.6
+        EXPECT_NE(v.find("\"ok\": true"), std::string::npos) << v;
+    }
+    Outcome r = run({"distance", a, b, "--verify"});
+    EXPECT_EQ(r.code, 0);
+    EXPECT_NE(r.out.find("holds the exact value"), std::string::npos) << r.out;
+}
