@@ -364,3 +364,34 @@ TEST(Driver, RealMeshAgainstPerturbedCopy) {
     EXPECT_LE(p.b_to_a.distance, ba.upper + 1e-12 * diag);
     EXPECT_LE(p.a_to_b.upper - p.a_to_b.lower, 1e-9 * diag);
 }
+
+TEST(Driver, DistanceToItselfIsZeroOnMessyMeshes) {
+    // Every target coincides with a source: coplanar, shared-edge and duplicated configurations
+    // everywhere. woody is flat (zero-thickness box), suzanne has quads and a non-manifold edge,
+    // beetle has 47 non-manifold edges.
+    for (const char* name : {"woody.obj", "suzanne.obj", "beetle.obj"}) {
+        SCOPED_TRACE(name);
+        TriangleMesh A = load_mesh(std::string(HLENS_SHARED_MESHES) + "/" + name);
+        HausdorffResult r = hausdorff(A, A);
+        double diag = A.bounds().diagonal();
+        EXPECT_LE(r.a_to_b.distance, 1e-12 * diag);
+        EXPECT_LE(r.b_to_a.distance, 1e-12 * diag);
+        EXPECT_LE(r.a_to_b.upper, 1e-11 * diag);
+    }
+}
+
+TEST(Driver, OverlappingCoplanarTriangulations) {
+    // Two different triangulations of the same flat square: h = 0 both ways. Then one of them
+    // lifted at one interior vertex by 0.3: h(A,B) = 0.3 exactly, at that vertex (d is the
+    // height over the plane, largest where A is highest).
+    TriangleMesh A = height_field(5, [](double, double) { return 0.0; });
+    TriangleMesh B = height_field(3, [](double, double) { return 0.0; });
+    HausdorffResult r = hausdorff(A, B);
+    EXPECT_LE(r.hausdorff, 1e-14);
+    A.positions[2 * 6 + 2].z = 0.3;  // interior vertex (i=2, j=2) of the 5x5 grid
+    HausdorffResult s = hausdorff(A, B);
+    EXPECT_NEAR(s.a_to_b.distance, 0.3, 1e-14);
+    EXPECT_NEAR(s.a_to_b.from_point.z, 0.3, 1e-12);
+    expect_between_bounds(A, B, s.a_to_b.distance, "lifted vertex");
+    expect_between_bounds(B, A, s.b_to_a.distance, "lifted vertex, reversed");
+}
