@@ -210,18 +210,9 @@ int ray_crossings(const RationalCurve& c, double z0, double z1, Vec2 A, Vec2 B, 
         Vec2 a = pt(i), b = pt(i + 1);
         if ((a.y > p.y) == (b.y > p.y)) continue;
         double x;
-        if (c.straight() || zs.size() == 2) {
-            if (c.straight()) x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-            else {
-                double lo = zs[i], hi = zs[i + 1];
-                bool up = b.y > a.y;
-                for (int it = 0; it < 80; ++it) {
-                    double m = 0.5 * (lo + hi);
-                    if ((c(m).y > p.y) == up) hi = m; else lo = m;
-                }
-                x = c(0.5 * (lo + hi)).x;
-            }
-        } else {
+        if (c.straight()) {
+            x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
+        } else {  // y is monotone on this piece: bisect for the crossing
             double lo = zs[i], hi = zs[i + 1];
             bool up = b.y > a.y;
             for (int it = 0; it < 80; ++it) {
@@ -236,12 +227,19 @@ int ray_crossings(const RationalCurve& c, double z0, double z1, Vec2 A, Vec2 B, 
 }
 }  // namespace
 
+int DomainMesh::loop_crossings(int start, Vec2 p) const {
+    int n = 0, h = start;
+    do {
+        const Edge& E = edges_[h >> 1];
+        n += ray_crossings(E.curve, E.z0, E.z1, vertices_[half_[h & ~1].origin].p, vertices_[half_[h | 1].origin].p, p);
+        h = half_[h].next;
+    } while (h != start);
+    return n;
+}
+
 bool DomainMesh::point_in_face(int f, Vec2 p) const {
     int n = 0;
-    for (int h : face_half_edges(f)) {
-        const Edge& E = edges_[h >> 1];
-        n += ray_crossings(E.curve, E.z0, E.z1, vertices_[half_[(h | 1) ^ 1].origin].p, vertices_[half_[h | 1].origin].p, p);
-    }
+    for (int l : faces_[f].loops) n += loop_crossings(l, p);
     return n & 1;
 }
 
@@ -455,12 +453,7 @@ std::vector<int> DomainMesh::rebuild_faces(const std::vector<int>& hes, int reus
         int best = -1;
         double best_area = HUGE_VAL;
         for (size_t k = 0; k < outers.size(); ++k) {
-            int n = 0, h = cycles[outers[k]];
-            do {
-                const Edge& F = edges_[h >> 1];
-                n += ray_crossings(F.curve, F.z0, F.z1, vertices_[half_[(h | 1) ^ 1].origin].p, vertices_[half_[h | 1].origin].p, p);
-                h = half_[h].next;
-            } while (h != cycles[outers[k]]);
+            int n = loop_crossings(cycles[outers[k]], p);
             if ((n & 1) && areas[outers[k]] < best_area) { best = (int)k; best_area = areas[outers[k]]; }
         }
         if (best < 0) { best = 0; ++stats_.warnings; }

@@ -128,6 +128,7 @@ private:
     int target(int h) const { return half_[h ^ 1].origin; }
     Vec2 he_point(int h, double s) const;            // s in [0,1] along the half-edge's direction
     Vec2 out_tangent(int h) const;                   // direction leaving origin(h)
+    int loop_crossings(int start, Vec2 p) const;      // ray crossings of one loop (parity: inside)
     int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2) const;
     void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
     std::vector<int> rebuild_faces(const std::vector<int>& hes, int reuse);
