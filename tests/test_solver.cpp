@@ -8,6 +8,7 @@
 #include <random>
 
 #include "bounds.h"
+#include "case_export.h"
 #include "hausdorff.h"
 #include "mesh_io.h"
 #include "target_solver.h"
@@ -394,4 +395,24 @@ TEST(Driver, OverlappingCoplanarTriangulations) {
     EXPECT_NEAR(s.a_to_b.from_point.z, 0.3, 1e-12);
     expect_between_bounds(A, B, s.a_to_b.distance, "lifted vertex");
     expect_between_bounds(B, A, s.b_to_a.distance, "lifted vertex, reversed");
+}
+
+TEST(ExportCase, ReproducesTheTargetsMaximumOnItsOwn) {
+    TriangleMesh B = height_field(6, [](double x, double y) { return 0.25 * std::sin(2 * x) * std::cos(3 * y); });
+    TriangleMesh A = height_field(3, [](double x, double y) { return 0.3 + 0.1 * x * y; });
+    VoxelGrid grid(A, B);
+    std::string dir = ::testing::TempDir();
+    for (uint32_t t : {0u, 7u, 17u}) {
+        TargetSolver whole(grid, 0, t);
+        whole.run();
+        export_case(grid, 0, t, dir + "/case_t.obj", dir + "/case_s.obj");
+        TriangleMesh a = load_mesh(dir + "/case_t.obj", {false}), b = load_mesh(dir + "/case_s.obj", {false});
+        EXPECT_EQ(a.num_triangles(), 1u);
+        EXPECT_EQ((int)b.num_triangles(), whole.insertions());
+        EXPECT_LT(b.num_triangles(), B.num_triangles());  // only the relevant ones
+        VoxelGrid g2(a, b);
+        TargetSolver alone(g2, 0, 0);
+        alone.run();
+        EXPECT_NEAR(alone.max_sq(), whole.max_sq(), 1e-12 * whole.max_sq());
+    }
 }
