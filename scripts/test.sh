@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the dependencies, builds everything (Release) in build/ and runs the whole test suite.
+# Installs the dependencies, builds everything (Release) in build/ and runs the whole test suite,
+# including the debugger's tests (suite Gui), which run hlens headless under xvfb-run.
 # Exits non-zero if the build or any test fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -7,4 +8,15 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
+# In CI the debugger must be built and its tests must not be skipped for want of xvfb-run.
+if [ -n "${CI:-}" ]; then
+  if [ ! -x build/bin/hlens ]; then
+    echo "test.sh: build/bin/hlens was not built (GLFW, OpenGL or Dear ImGui not found?)" >&2
+    exit 1
+  fi
+  if ! command -v xvfb-run >/dev/null 2>&1; then
+    echo "test.sh: xvfb-run is missing: the Gui tests would be skipped" >&2
+    exit 1
+  fi
+fi
 ctest --test-dir build --output-on-failure -j2

@@ -1,0 +1,80 @@
+// What the panels show and edit. The main loop owns one AppState; panels read it and set
+// `Requests` for the loop to act on (start/cancel jobs, reset the camera, save a PNG), so panels
+// need no access to OpenGL or to the job threads.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "compute.h"
+#include "scene.h"
+
+namespace hlens::gui {
+
+struct AppError {
+    std::string title;    // e.g. "Cannot load mesh B"
+    std::string file;     // the file named by the error ("" if none)
+    std::string reason;
+};
+
+struct ColourRange {
+    float lo = 0, hi = 1;         // current range of the colour map
+    float data_lo = 0, data_hi = 1;
+    bool valid = false;
+};
+
+struct Requests {
+    bool cancel = false, recompute = false, home = false, screenshot = false, clear_errors = false;
+    int set_direction = -1;
+    long select = -2;             // -2: nothing; -1: clear the selection; >= 0: select that target
+    bool load = false;            // open load_path[0], load_path[1] as A and B
+    std::string load_path[2];
+};
+
+// The view rectangle (the part of the window right of the sidebar), in window coordinates.
+struct ViewRect {
+    float x = 0, y = 0, w = 1, h = 1;
+    bool contains(float px, float py) const { return px >= x && py >= y && px < x + w && py < y + h; }
+};
+
+struct AppState {
+    std::string path[2];
+    std::string name[2] = {"A", "B"};   // file names for the UI
+    bool demo = false;
+    bool headless = false;
+
+    std::shared_ptr<const LoadedScene> scene;   // set as soon as the meshes are loaded
+    bool computed = false, cancelled = false;
+    HausdorffResult result;
+
+    int direction = 0;            // 0: A to B (colour map and targets on A), 1: B to A (on B)
+    long selected[2] = {-1, -1};  // selected target per direction (-1: none)
+    std::optional<TraceSummary> trace[2];   // trace of the selected target per direction
+    bool trace_running = false;
+
+    MeshStyle style[2];
+    ColourRange range[2];
+    bool show_witness[2] = {true, true};
+    bool show_colormap = true;
+    int up_axis = 2;
+
+    std::string demo_path[2];     // the built-in demo pair
+    std::string edit_path[2];     // the file panel's text fields
+    std::vector<std::string> recent;    // recently opened files, newest first (not kept in headless runs)
+    std::vector<std::string> dropped;   // files dropped on the window, waiting for "which side?"
+
+    std::vector<AppError> errors;
+    std::string status;           // last status message (e.g. "saved hlens-....png")
+
+    // Progress of the compute job, filled by the loop each frame.
+    bool computing = false;
+    double progress = -1;
+    std::string phase;
+    double elapsed = 0;
+
+    ViewRect view;
+    float sidebar_width = 0;
+    Requests req;
+};
+
+}  // namespace hlens::gui

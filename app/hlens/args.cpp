@@ -1,0 +1,117 @@
+#include "args.h"
+
+#include <cstdlib>
+
+#include "gl.h"
+
+namespace hlens::gui {
+
+const char* usage_text() {
+    return "usage: hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]\n"
+           "\n"
+           "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
+           "(assets/demo_a.obj, assets/demo_b.obj).\n"
+           "\n"
+           "  --target I          select triangle I of the measured mesh as the target T'\n"
+           "  --direction ab|ba   measure A against B (targets in A, default) or B against A\n"
+           "  --size WxH          window size in pixels (default 1280x800)\n"
+           "  --screenshot PATH   headless: wait for the computation, render, write a PNG, print the\n"
+           "                      state as one JSON line on stdout and exit (0; 2 on bad input)\n"
+           "\n"
+           "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --key home|f12\n"
+           "                      with --screenshot: input played in order once the computation\n"
+           "                      is done (window pixels from the top-left)\n"
+           "\n"
+           "Mouse: left-drag orbits, right- or shift+left-drag pans, the wheel zooms, a click picks a\n"
+           "target, a double-click recentres. Keys: Home resets the camera, F12 saves a PNG.\n";
+}
+
+namespace {
+long parse_long(const std::string& s, const std::string& what) {
+    if (s.empty() || s.size() > 12) throw UsageError(what + " expects a non-negative integer, got '" + s + "'");
+    for (char c : s)
+        if (c < '0' || c > '9') throw UsageError(what + " expects a non-negative integer, got '" + s + "'");
+    return std::strtol(s.c_str(), nullptr, 10);
+}
+std::vector<float> parse_floats(const std::string& s, size_t n, const std::string& what) {
+    std::vector<float> v;
+    size_t i = 0;
+    while (i <= s.size() && v.size() < n + 1) {
+        size_t j = s.find(',', i);
+        if (j == std::string::npos) j = s.size();
+        std::string part = s.substr(i, j - i);
+        char* end = nullptr;
+        float f = std::strtof(part.c_str(), &end);
+        if (part.empty() || !end || *end != 0) throw UsageError(what + ": expected numbers separated by commas, got '" + s + "'");
+        v.push_back(f);
+        i = j + 1;
+    }
+    if (v.size() != n) throw UsageError(what + ": expected " + std::to_string(n) + " numbers, got '" + s + "'");
+    return v;
+}
+
+}  // namespace
+
+Options parse_args(const std::vector<std::string>& args) {
+    Options o;
+    std::vector<std::string> positional;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+            return args[++i];
+        };
+        if (a == "--help" || a == "-h") {
+            o.help = true;
+        } else if (a == "--target") {
+            o.target = parse_long(value(), "--target");
+        } else if (a == "--direction") {
+            const std::string& v = value();
+            if (v == "ab") o.direction = 0;
+            else if (v == "ba") o.direction = 1;
+            else throw UsageError("--direction expects ab or ba, got '" + v + "'");
+        } else if (a == "--size") {
+            const std::string& v = value();
+            size_t x = v.find_first_of("xX");
+            if (x == std::string::npos) throw UsageError("--size expects WxH, got '" + v + "'");
+            long w = parse_long(v.substr(0, x), "--size"), h = parse_long(v.substr(x + 1), "--size");
+            if (w < 64 || h < 64 || w > 8192 || h > 8192) throw UsageError("--size: width and height must be in 64..8192");
+            o.width = (int)w;
+            o.height = (int)h;
+            o.size_given = true;
+        } else if (a == "--screenshot") {
+            o.screenshot = value();
+            if (o.screenshot.empty()) throw UsageError("--screenshot needs a path");
+        } else if (a == "--click" || a == "--double-click") {
+            auto v = parse_floats(value(), 2, a);
+            o.input.push_back({a == "--click" ? InputAction::Click : InputAction::DoubleClick, v[0], v[1], v[0], v[1]});
+        } else if (a == "--key") {
+            const std::string& v = value();
+            InputAction k;
+            k.kind = InputAction::Key;
+            if (v == "home") k.key = GLFW_KEY_HOME;
+            else if (v == "f12") k.key = GLFW_KEY_F12;
+            else throw UsageError("--key expects home or f12, got '" + v + "'");
+            o.input.push_back(k);
+        } else if (a == "--drag") {
+            auto v = parse_floats(value(), 4, a);
+            o.input.push_back({InputAction::Drag, v[0], v[1], v[2], v[3]});
+        } else if (a.size() > 1 && a[0] == '-') {
+            throw UsageError("unknown option " + a);
+        } else {
+            positional.push_back(a);
+        }
+    }
+    if (!o.input.empty() && o.screenshot.empty()) throw UsageError("--click, --double-click, --drag and --key need --screenshot");
+    if (positional.empty()) {
+        o.demo = true;
+    } else if (positional.size() == 2) {
+        o.path[0] = positional[0];
+        o.path[1] = positional[1];
+    } else {
+        throw UsageError("expected two meshes A B (or none for the demo), got " + std::to_string(positional.size()));
+    }
+    return o;
+}
+
+}  // namespace hlens::gui

@@ -1,0 +1,38 @@
+// Command line of hlens:  hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]
+//                         [--click X,Y] [--double-click X,Y] [--drag X0,Y0,X1,Y1] [--key home|f12]
+#pragma once
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hlens::gui {
+
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Scripted mouse input for headless runs, in window coordinates (the screenshot's pixels at 1x):
+// played frame by frame through Dear ImGui's input state, as real mouse events would be.
+struct InputAction {
+    enum Kind { Click, DoubleClick, Drag, Key } kind = Click;
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int key = 0;   // Key: a GLFW key code
+};
+
+struct Options {
+    std::string path[2];         // mesh A, mesh B (the built-in demo pair when none are given)
+    bool demo = false;           // no meshes given: the demo pair
+    long target = -1;            // --target I: select triangle I of the measured mesh (-1: none)
+    int direction = 0;           // 0: A to B (targets in A), 1: B to A (targets in B)
+    int width = 1280, height = 800;
+    bool size_given = false;
+    std::string screenshot;      // --screenshot PATH: headless run, write a PNG and exit
+    std::vector<InputAction> input;   // --click, --double-click, --drag, --key (in the given order)
+    bool help = false;
+};
+
+// Throws UsageError with a one-line message.
+Options parse_args(const std::vector<std::string>& args);
+const char* usage_text();
+
+}  // namespace hlens::gui

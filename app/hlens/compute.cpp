@@ -1,0 +1,165 @@
+#include "compute.h"
+
+#include <cmath>
+
+#include "mesh_io.h"
+
+namespace hlens::gui {
+
+Worker::~Worker() = default;
+
+void Worker::launch(std::function<void()> body) {
+    stop();
+    cancel_.store(false);
+    progress_.store(-1);
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        phase_.clear();
+    }
+    start_ = std::chrono::steady_clock::now();
+    running_.store(true);
+    thread_ = std::thread([this, body = std::move(body)] {
+        body();
+        running_.store(false);
+    });
+}
+
+void Worker::stop() {
+    if (thread_.joinable()) {
+        cancel_.store(true);
+        thread_.join();
+    }
+}
+
+std::string Worker::phase() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return phase_;
+}
+
+void Worker::set_phase(std::string s) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    phase_ = std::move(s);
+}
+
+double Worker::elapsed_seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+// ---------------------------------------------------------------- ComputeJob
+
+namespace {
+LoadError to_load_error(int side, const std::string& path, const std::string& message) {
+    LoadError e;
+    e.side = side;
+    e.file = path;
+    const std::string prefix = path + ": ";
+    e.reason = message.compare(0, prefix.size(), prefix) == 0 ? message.substr(prefix.size()) : message;
+    return e;
+}
+}  // namespace
+
+void ComputeJob::start(const std::string& path_a, const std::string& path_b) {
+    launch([this, path_a, path_b] {
+        ComputeOutput out;
+        auto scene = std::make_shared<LoadedScene>();
+        const std::string paths[2] = {path_a, path_b};
+        for (int side = 0; side < 2; ++side) {   // both files, so both errors are reported
+            set_phase(std::string("Loading ") + (side == 0 ? "A" : "B") + ": " + paths[side]);
+            try {
+                scene->mesh[side] = load_mesh(paths[side]);
+            } catch (const MeshError& e) {
+                out.errors.push_back(to_load_error(side, paths[side], e.what()));
+            } catch (const std::exception& e) {
+                out.errors.push_back(to_load_error(side, paths[side], std::string("unexpected error: ") + e.what()));
+            }
+        }
+        try {
+            if (out.errors.empty()) {
+                set_phase("Building the voxel grid");
+                scene->grid = std::make_unique<VoxelGrid>(scene->mesh[0], scene->mesh[1]);
+                {
+                    std::lock_guard<std::mutex> lock(mutex_);
+                    scene_ = scene;
+                }
+                HausdorffOptions opt;
+                opt.cancel = &cancel_flag();
+                auto t0 = std::chrono::steady_clock::now();
+                for (int side = 0; side < 2 && !cancel_flag().load(); ++side) {
+                    set_phase(side == 0 ? "h(A,B)" : "h(B,A)");
+                    set_progress(0.5 * side);
+                    opt.progress = [this, side](double f) { set_progress(0.5 * side + 0.5 * f); };
+                    OneSidedResult r = one_sided(*scene->grid, side, opt);
+                    (side == 0 ? out.result.a_to_b : out.result.b_to_a) = std::move(r);
+                }
+                out.cancelled = cancel_flag().load();
+                out.computed = !out.cancelled;
+                out.result.hausdorff = std::max(out.result.a_to_b.distance, out.result.b_to_a.distance);
+                out.result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+                set_progress(1);
+            }
+        } catch (const std::exception& e) {   // never let an exception escape the thread
+            out.errors.push_back(LoadError{-1, "", std::string("computation failed: ") + e.what()});
+        }
+        set_phase(out.errors.empty() ? (out.cancelled ? "Cancelled" : "Done") : "Failed");
+        std::lock_guard<std::mutex> lock(mutex_);
+        result_ = std::move(out);
+    });
+}
+
+std::shared_ptr<const LoadedScene> ComputeJob::take_scene() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::move(scene_);
+}
+
+std::optional<ComputeOutput> ComputeJob::take_result() {
+    if (running()) return std::nullopt;
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::optional<ComputeOutput> r = std::move(result_);
+    result_.reset();
+    return r;
+}
+
+// ---------------------------------------------------------------- TraceJob
+
+void TraceJob::start(std::shared_ptr<const LoadedScene> scene, int side, uint32_t target) {
+    side_ = side;
+    target_ = target;
+    scene_ = scene;
+    launch([this, scene, side, target] {
+        TraceSummary s;
+        s.side = side;
+        s.target = target;
+        auto t0 = std::chrono::steady_clock::now();
+        try {
+            auto ts = std::make_shared<TargetSolver>(*scene->grid, side, target);
+            while (!cancel_flag().load() && ts->step())
+                if (ts->insertions() % 16 == 0) set_phase("insertion " + std::to_string(ts->insertions()));
+            s.cancelled = !ts->finished();
+            s.insertions = ts->insertions();
+            if (const DomainMesh* dm = ts->domain_mesh()) {
+                s.domains = dm->num_live_faces();
+                s.arcs = dm->num_live_edges();
+                s.vertices = dm->num_live_vertices();
+            }
+            s.max = std::sqrt(ts->max_sq());
+            s.max_point = ts->max_point();
+            s.degenerate = ts->frame().degenerate;
+            s.solver = std::move(ts);
+        } catch (const std::exception& e) {
+            s.error = e.what();
+        }
+        s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        std::lock_guard<std::mutex> lock(mutex_);
+        result_ = std::move(s);
+    });
+}
+
+std::optional<TraceSummary> TraceJob::take_result() {
+    if (running()) return std::nullopt;
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::optional<TraceSummary> r = std::move(result_);
+    result_.reset();
+    return r;
+}
+
+}  // namespace hlens::gui

@@ -1,0 +1,127 @@
+// Background jobs of the debugger: loading + the whole-mesh computation, and one target's trace.
+//
+// Each job runs on its own std::thread; the UI thread only polls (progress(), phase(), take_*()),
+// so the window stays responsive. Results are handed over once, by value or shared_ptr, under a
+// mutex; nothing else is shared with the worker except the cancel flag and the progress atomics.
+#pragma once
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "hausdorff.h"
+#include "mesh.h"
+#include "target_solver.h"
+#include "voxel_grid.h"
+
+namespace hlens::gui {
+
+// Both meshes and the voxel grid over them. Heap-allocated and never moved: the grid (and every
+// TargetSolver built on it) points into mesh[0] and mesh[1].
+struct LoadedScene {
+    TriangleMesh mesh[2];
+    std::unique_ptr<VoxelGrid> grid;
+    Box3 bounds() const {
+        Box3 b = mesh[0].bounds();
+        b.add(mesh[1].bounds());
+        return b;
+    }
+};
+
+struct LoadError {
+    int side = -1;          // 0: A, 1: B, -1: not about one file
+    std::string file;       // the path as given
+    std::string reason;     // the MeshError message without the leading "<path>: "
+};
+
+struct ComputeOutput {
+    std::vector<LoadError> errors;   // non-empty: loading failed, nothing else is valid
+    HausdorffResult result;          // h(A,B), h(B,A), hausdorff (valid when computed)
+    bool computed = false;
+    bool cancelled = false;
+};
+
+// A background thread with a cancel flag, a progress fraction and a phase text.
+class Worker {
+public:
+    Worker() = default;
+    Worker(const Worker&) = delete;
+    Worker& operator=(const Worker&) = delete;
+    virtual ~Worker();
+
+    bool running() const { return running_.load(); }
+    void cancel() { cancel_.store(true); }
+    bool cancelling() const { return cancel_.load(); }
+    double progress() const { return progress_.load(); }   // 0..1, or < 0 when unknown
+    std::string phase() const;
+    double elapsed_seconds() const;
+
+protected:
+    void launch(std::function<void()> body);   // cancels and joins a previous run first
+    void stop();                               // cancel and join (call from derived destructors)
+    void set_phase(std::string s);
+    void set_progress(double f) { progress_.store(f); }
+    const std::atomic<bool>& cancel_flag() const { return cancel_; }
+    mutable std::mutex mutex_;                 // guards the derived class's results and phase_
+
+private:
+    std::thread thread_;
+    std::atomic<bool> running_{false}, cancel_{false};
+    std::atomic<double> progress_{-1};
+    std::string phase_;
+    std::chrono::steady_clock::time_point start_;
+};
+
+// Loads A and B, builds the voxel grid, then h(A,B) and h(B,A) (one_sided twice on that grid: the
+// same computation as hlens::hausdorff(), split so the progress bar can name the direction and the
+// grid can be kept for the target solver).
+class ComputeJob : public Worker {
+public:
+    ~ComputeJob() override { stop(); }
+    void start(const std::string& path_a, const std::string& path_b);
+    // The meshes and grid, once, as soon as they are ready (before the distances are).
+    std::shared_ptr<const LoadedScene> take_scene();
+    // The outcome, once, when the job has ended.
+    std::optional<ComputeOutput> take_result();
+
+private:
+    std::shared_ptr<const LoadedScene> scene_;
+    std::optional<ComputeOutput> result_;
+};
+
+// One target T' of mesh `side` against the other mesh: what the target panel shows.
+struct TraceSummary {
+    int side = 0;
+    uint32_t target = 0;
+    int insertions = 0, domains = 0, arcs = 0, vertices = 0;
+    double max = 0;               // sqrt(max d^2 over T')
+    Vec3 max_point;
+    bool degenerate = false;
+    bool cancelled = false;
+    double seconds = 0;
+    std::string error;
+    // The finished solver, kept for the panels to come (domain view, stepping, event log).
+    std::shared_ptr<TargetSolver> solver;
+};
+
+class TraceJob : public Worker {
+public:
+    ~TraceJob() override { stop(); }
+    void start(std::shared_ptr<const LoadedScene> scene, int side, uint32_t target);
+    std::optional<TraceSummary> take_result();
+    int side() const { return side_; }
+    long target() const { return target_; }
+
+private:
+    std::shared_ptr<const LoadedScene> scene_;   // keeps the grid alive while the solver runs
+    std::optional<TraceSummary> result_;
+    int side_ = 0;
+    long target_ = -1;
+};
+
+}  // namespace hlens::gui

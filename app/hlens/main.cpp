@@ -1,0 +1,532 @@
+// hlens: the interactive debugger of Hausdorff Lens (GLFW + Dear ImGui + OpenGL 3.3 core).
+//
+// One straight main loop, as in Dear ImGui's examples/example_glfw_opengl3/main.cpp:
+//   1. events  2. harvest background jobs  3. new ImGui frame  4. mouse/keyboard for the 3D view
+//   5. panels  6. act on the panels' requests  7. render  8. screenshots  9. swap
+// Loading and computing run on background threads (compute.h); the loop only polls them.
+//
+// Headless (--screenshot PATH): vsync off, no imgui.ini; the loop waits for the computation (and
+// the trace of --target), lets ImGui settle for a few frames, reads the back buffer into a PNG
+// before swapping, prints the state as one JSON line on stdout and exits (0, or 2 on bad input).
+#include <algorithm>
+#include <chrono>
+#include <cfloat>
+#include <cinttypes>
+#include <memory>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <glm/glm.hpp>
+
+#include "app_state.h"
+#include "args.h"
+#include "camera.h"
+#include "compute.h"
+#include "gl.h"
+#include "panels.h"
+#include "picking.h"
+#include "scene.h"
+#include "screenshot.h"
+
+#ifndef HLENS_ASSET_DIR
+#define HLENS_ASSET_DIR "assets"
+#endif
+
+namespace fs = std::filesystem;
+using namespace hlens;
+using namespace hlens::gui;
+
+namespace {
+
+// Files dropped on the window (GLFW calls this from glfwPollEvents, on the main thread).
+std::vector<std::string> g_dropped;
+void on_drop(GLFWwindow*, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
+}
+
+void glfw_error(int code, const char* what) { std::fprintf(stderr, "hlens: GLFW error %d: %s\n", code, what); }
+
+// Settings of interactive runs live in ~/.config/hlens/ (never the current directory).
+std::string config_file(const char* name) {
+    const char* xdg = std::getenv("XDG_CONFIG_HOME");
+    const char* home = std::getenv("HOME");
+    fs::path dir = xdg && *xdg ? fs::path(xdg) / "hlens" : home && *home ? fs::path(home) / ".config" / "hlens" : fs::path();
+    if (dir.empty()) return "";
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    return ec ? "" : (dir / name).string();
+}
+
+// Recently opened files: ~/.config/hlens/recent.txt, one path a line, newest first.
+std::vector<std::string> load_recent(const std::string& file) {
+    std::vector<std::string> r;
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line) && r.size() < 12;)
+        if (!line.empty()) r.push_back(line);
+    return r;
+}
+void remember(std::vector<std::string>& recent, const std::string& path, const std::string& file) {
+    std::error_code ec;
+    fs::path abs = fs::absolute(path, ec);
+    const std::string p = ec ? path : abs.lexically_normal().string();
+    recent.erase(std::remove(recent.begin(), recent.end(), p), recent.end());
+    recent.insert(recent.begin(), p);
+    if (recent.size() > 12) recent.resize(12);
+    if (file.empty()) return;
+    std::ofstream out(file);
+    for (const std::string& r : recent) out << r << "\n";
+}
+
+std::string json_number(double v) {
+    if (!std::isfinite(v)) return "null";
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+// The state behind a headless picture, one JSON line.
+std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h, int vx, int vw) {
+    const int d = s.direction;
+    const long t = s.selected[d];
+    const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+    const TraceSummary* tr = t >= 0 && s.trace[d] && s.trace[d]->target == (uint32_t)t ? &*s.trace[d] : nullptr;
+    std::string j = "{\"direction\": \"";
+    j += d == 0 ? "ab" : "ba";
+    j += "\", \"target\": " + (t >= 0 ? std::to_string(t) : std::string("null"));
+    j += ", \"target_max\": " + (t >= 0 && s.computed && (size_t)t < r.target_max.size() ? json_number(r.target_max[t]) : "null");
+    j += ", \"target_exact\": " + std::string(t >= 0 && s.computed && (size_t)t < r.target_exact.size()
+                                                  ? (r.target_exact[t] ? "true" : "false")
+                                                  : "null");
+    j += ", \"insertions\": " + (tr ? std::to_string(tr->insertions) : std::string("null"));
+    j += ", \"domains\": " + (tr ? std::to_string(tr->domains) : std::string("null"));
+    j += ", \"arcs\": " + (tr ? std::to_string(tr->arcs) : std::string("null"));
+    j += ", \"vertices\": " + (tr ? std::to_string(tr->vertices) : std::string("null"));
+    j += ", \"trace_max\": " + (tr ? json_number(tr->max) : std::string("null"));
+    j += ", \"a_to_b\": " + (s.computed ? json_number(s.result.a_to_b.distance) : "null");
+    j += ", \"b_to_a\": " + (s.computed ? json_number(s.result.b_to_a.distance) : "null");
+    j += ", \"hausdorff\": " + (s.computed ? json_number(s.result.hausdorff) : "null");
+    j += ", \"camera\": {\"yaw\": " + json_number(cam.yaw) + ", \"pitch\": " + json_number(cam.pitch) +
+         ", \"distance\": " + json_number(cam.distance) + "}";
+    j += ", \"size\": [" + std::to_string(fb_w) + ", " + std::to_string(fb_h) + "]";
+    j += ", \"viewport\": [" + std::to_string(vx) + ", 0, " + std::to_string(vw) + ", " + std::to_string(fb_h) + "]";
+    j += "}";
+    return j;
+}
+
+// Scripted input as one mouse state per frame.
+struct MouseFrame {
+    float x, y;
+    bool down;
+    int key = -1;   // a GLFW key held down during this frame
+};
+std::vector<MouseFrame> script_frames(const std::vector<InputAction>& actions) {
+    std::vector<MouseFrame> f;
+    for (const InputAction& a : actions) {
+        if (a.kind == InputAction::Key) {
+            MouseFrame k = f.empty() ? MouseFrame{-1, -1, false} : f.back();
+            k.down = false;
+            k.key = a.key;
+            f.push_back(k);
+            k.key = -1;
+            f.push_back(k);
+        } else if (a.kind == InputAction::Drag) {
+            f.push_back({a.x0, a.y0, false});
+            f.push_back({a.x0, a.y0, true});
+            for (int i = 1; i <= 8; ++i)
+                f.push_back({a.x0 + (a.x1 - a.x0) * i / 8, a.y0 + (a.y1 - a.y0) * i / 8, true});
+            f.push_back({a.x1, a.y1, false});
+        } else {
+            f.push_back({a.x0, a.y0, false});
+            for (int k = 0; k < (a.kind == InputAction::DoubleClick ? 2 : 1); ++k) {
+                f.push_back({a.x0, a.y0, true});
+                f.push_back({a.x0, a.y0, false});
+            }
+        }
+        f.push_back(f.back());
+    }
+    return f;
+}
+
+void set_direction(AppState& s, int d) {
+    s.direction = d;
+    // The measured mesh solid, the other one a wireframe that does not tint the colour map,
+    // unless the user set them.
+    if (!s.style[d].touched) {
+        s.style[d].mode = DrawMode::SolidEdges;
+        s.style[d].opacity = 1.0f;
+    }
+    if (!s.style[1 - d].touched) {
+        s.style[1 - d].mode = DrawMode::Wireframe;
+        s.style[1 - d].opacity = 0.6f;
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    // ---- 0. Command line
+    Options opt;
+    try {
+        opt = parse_args(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "hlens: %s\n%s", e.what(), usage_text());
+        return 2;
+    }
+    if (opt.help) {
+        std::fputs(usage_text(), stdout);
+        return 0;
+    }
+    AppState s;
+    s.headless = !opt.screenshot.empty();
+    s.demo = opt.demo;
+    for (int side = 0; side < 2; ++side) {
+        s.demo_path[side] = std::string(HLENS_ASSET_DIR) + (side == 0 ? "/demo_a.obj" : "/demo_b.obj");
+        s.path[side] = s.edit_path[side] = opt.demo ? s.demo_path[side] : opt.path[side];
+        s.name[side] = fs::path(s.path[side]).filename().string();
+    }
+    const std::string recent_file = s.headless ? "" : config_file("recent.txt");
+    if (!recent_file.empty()) s.recent = load_recent(recent_file);
+    s.style[0].color[0] = 0.86f, s.style[0].color[1] = 0.62f, s.style[0].color[2] = 0.42f;
+    s.style[1].color[0] = 0.55f, s.style[1].color[1] = 0.66f, s.style[1].color[2] = 0.88f;
+    set_direction(s, opt.direction);
+
+    // ---- 1. Window and OpenGL 3.3 core context
+    glfwSetErrorCallback(glfw_error);
+    if (!glfwInit()) {
+        std::fprintf(stderr, "hlens: cannot initialise GLFW (no display? try: xvfb-run -a -s \"-screen 0 1600x1000x24\" hlens ...)\n");
+        return 1;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_RESIZABLE, s.headless ? GLFW_FALSE : GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, s.headless ? GLFW_FALSE : GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(opt.width, opt.height, "Hausdorff Lens", nullptr, nullptr);
+    if (!window) {
+        std::fprintf(stderr, "hlens: cannot create an OpenGL 3.3 core window\n");
+        glfwTerminate();
+        return 1;
+    }
+    glfwMakeContextCurrent(window);
+    if (!s.headless) glfwSetDropCallback(window, on_drop);
+    glfwSwapInterval(s.headless ? 0 : 1);
+
+    // ---- 2. Dear ImGui: style, DPI scaling, backends
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    static std::string ini;   // must outlive the context
+    ini = s.headless ? "" : config_file("imgui.ini");
+    io.IniFilename = ini.empty() ? nullptr : ini.c_str();
+    float dpi = 1.0f;
+    if (!s.headless) {
+        float sx = 1, sy = 1;
+        glfwGetWindowContentScale(window, &sx, &sy);
+        dpi = std::max(1.0f, sx);
+    }
+    ImGui::StyleColorsDark();
+    ImGuiStyle& style = ImGui::GetStyle();
+    style.WindowRounding = 0;
+    style.Colors[ImGuiCol_WindowBg].w = 1.0f;
+    style.ScaleAllSizes(dpi);
+    ImFontConfig font;
+    font.SizePixels = std::round(13.0f * dpi);
+    io.Fonts->AddFontDefault(&font);
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+
+    // ---- 3. Renderer, picking, background jobs
+    // (unique_ptr: both hold GL objects, so they are released before the context is destroyed)
+    auto scene_ptr = std::make_unique<Scene>();
+    auto picker_ptr = std::make_unique<Picker>();
+    Scene& scene = *scene_ptr;
+    Picker& picker = *picker_ptr;
+    std::string gl_error;
+    if (!scene.init(gl_error) || !picker.init(gl_error)) {
+        std::fprintf(stderr, "hlens: %s\n", gl_error.c_str());
+        return 1;
+    }
+    Camera camera;
+    ComputeJob compute;
+    TraceJob trace;
+    compute.start(s.path[0], s.path[1]);
+    bool need_home = false, target_applied = opt.target < 0, compute_done = false;
+    bool press_in_view[3] = {false, false, false};
+    bool press_was_double = false;   // the press of a double-click: its release does not pick
+    const std::vector<MouseFrame> script = script_frames(opt.input);
+    size_t script_pos = 0;
+    int settle = 0, redraw = 3, exit_code = -1;
+
+    while (!glfwWindowShouldClose(window)) {
+        // ---- 1. Events (interactive and idle: sleep until something happens)
+        const bool busy = compute.running() || trace.running();
+        if (s.headless || busy || redraw > 0)
+            glfwPollEvents();
+        else
+            glfwWaitEventsTimeout(0.25);
+        if (s.headless && busy) std::this_thread::sleep_for(std::chrono::milliseconds(10));   // leave the cores to the job
+
+        // ---- 2. Harvest background jobs
+        if (auto sc = compute.take_scene()) {
+            s.scene = sc;
+            s.trace[0].reset();
+            s.trace[1].reset();
+            scene.set_meshes(sc->mesh[0], sc->mesh[1]);
+            s.up_axis = guess_up_axis(scene.box_lo(), scene.box_hi());
+            need_home = true;
+        }
+        if (auto out = compute.take_result()) {
+            compute_done = true;
+            s.computed = out->computed;
+            s.cancelled = out->cancelled;
+            for (const LoadError& e : out->errors) {
+                const char* title = e.side == 0 ? "Cannot load mesh A" : e.side == 1 ? "Cannot load mesh B" : "Computation failed";
+                s.errors.push_back(AppError{title, e.file, e.reason});
+                std::fprintf(stderr, "hlens: %s%s%s\n", e.file.c_str(), e.file.empty() ? "" : ": ", e.reason.c_str());
+            }
+            if (!out->errors.empty()) {
+                s.scene.reset();
+                scene.clear();
+            } else if (!s.headless && !s.demo) {
+                remember(s.recent, s.path[1], "");
+                remember(s.recent, s.path[0], recent_file);
+            }
+            if (s.computed) {
+                s.result = std::move(out->result);
+                for (int d = 0; d < 2; ++d) {
+                    const std::vector<double>& v = d == 0 ? s.result.a_to_b.target_max : s.result.b_to_a.target_max;
+                    scene.set_values(d, v);
+                    ColourRange& r = s.range[d];
+                    r.valid = !v.empty();
+                    if (r.valid) {
+                        auto [mn, mx] = std::minmax_element(v.begin(), v.end());
+                        r.data_lo = r.lo = (float)*mn;
+                        r.data_hi = r.hi = (float)*mx;
+                    }
+                }
+            }
+        }
+        if (!g_dropped.empty()) {
+            s.dropped = std::move(g_dropped);
+            g_dropped.clear();
+        }
+        if (auto tr = trace.take_result())
+            if (!tr->cancelled && s.selected[tr->side] == (long)tr->target) s.trace[tr->side] = std::move(*tr);
+        // --target: applied once the meshes are there (out of range is an input error, like hlens-cli's).
+        if (!target_applied && s.scene) {
+            target_applied = true;
+            const size_t n = s.scene->mesh[s.direction].num_triangles();
+            if ((size_t)opt.target < n) {
+                s.selected[s.direction] = opt.target;
+            } else {
+                char why[160];
+                std::snprintf(why, sizeof why, "target %ld is out of range: mesh %s has %zu triangles", opt.target,
+                              s.direction == 0 ? "A" : "B", n);
+                s.errors.push_back(AppError{"Bad --target", "", why});
+                std::fprintf(stderr, "hlens: %s\n", why);
+            }
+        }
+        // The selected target of the current direction gets its trace (restarted if superseded).
+        {
+            const int d = s.direction;
+            const long t = s.selected[d];
+            if (s.scene && s.scene->grid && t >= 0 && !(s.trace[d] && s.trace[d]->target == (uint32_t)t) &&
+                !(trace.running() && trace.side() == d && trace.target() == t))
+                trace.start(s.scene, d, (uint32_t)t);
+        }
+        s.computing = compute.running();
+        s.progress = compute.progress();
+        s.phase = compute.phase();
+        s.elapsed = compute.elapsed_seconds();
+        s.trace_running = trace.running();
+
+        // ---- 3. Start the Dear ImGui frame
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        // Headless: ImGui's clock advances a fixed 1/60 s per frame, so what depends on it (the
+        // double-click interval, fades) does not depend on how fast this machine renders.
+        if (s.headless) io.DeltaTime = 1.0f / 60.0f;
+        // Headless scripted input replaces the backend's mouse state, once the results are in.
+        // Frames are consecutive once started (a click's trace must not delay the next input).
+        const bool script_running = script_pos < script.size() && compute_done && target_applied &&
+                                    (script_pos > 0 || !trace.running());
+        if (script_running) {
+            const MouseFrame& f = script[script_pos++];
+            io.MousePos = f.x < 0 ? ImVec2(-FLT_MAX, -FLT_MAX) : ImVec2(f.x, f.y);
+            for (bool& b : io.MouseDown) b = false;
+            io.MouseDown[0] = f.down;
+            for (bool& k : io.KeysDown) k = false;
+            if (f.key >= 0) io.KeysDown[f.key] = true;
+        }
+        ImGui::NewFrame();
+        int fb_w = 0, fb_h = 0;
+        glfwGetFramebufferSize(window, &fb_w, &fb_h);
+        layout(s, io.DisplaySize.x, io.DisplaySize.y);
+        const float fbs_x = io.DisplayFramebufferScale.x, fbs_y = io.DisplayFramebufferScale.y;
+        const int vx = (int)std::lround(s.view.x * fbs_x), vw = std::max(1, fb_w - vx), vh = std::max(1, fb_h);
+        const float aspect = float(vw) / float(vh);
+        camera.up_axis = s.up_axis;
+        if (need_home && scene.loaded()) {
+            camera.frame(scene.box_lo(), scene.box_hi(), aspect);
+            need_home = false;
+        }
+        bool input = io.MouseDelta.x != 0 || io.MouseDelta.y != 0 || io.MouseWheel != 0 || ImGui::IsAnyMouseDown() ||
+                     io.InputQueueCharacters.Size > 0;
+        for (bool k : io.KeysDown) input = input || k;
+        redraw = input ? 3 : std::max(0, redraw - 1);
+
+        auto view_params = [&]() {
+            ViewParams p;
+            p.mvp = camera.projection(aspect) * camera.view();
+            p.eye = camera.eye();
+            p.viewport[0] = vx;
+            p.viewport[1] = 0;
+            p.viewport[2] = vw;
+            p.viewport[3] = vh;
+            p.style[0] = s.style[0];
+            p.style[1] = s.style[1];
+            p.measured = s.direction;
+            p.use_map = s.show_colormap && s.range[s.direction].valid;
+            p.lo = s.range[s.direction].lo;
+            p.hi = s.range[s.direction].hi;
+            p.selected = (int)s.selected[s.direction];
+            return p;
+        };
+
+        // ---- 4. Mouse and keyboard for the 3D view, only when ImGui does not want them
+        {
+            const ImVec2 m = io.MousePos;
+            const bool over_view = !io.WantCaptureMouse && s.view.contains(m.x, m.y) && scene.loaded();
+            for (int b = 0; b < 3; ++b)
+                if (ImGui::IsMouseClicked(b)) press_in_view[b] = over_view;
+            if (ImGui::IsMouseClicked(0)) press_was_double = ImGui::IsMouseDoubleClicked(0);
+            const int px = (int)(m.x * fbs_x), py = fb_h - 1 - (int)(m.y * fbs_y);
+            if (press_in_view[0] && ImGui::IsMouseDown(0)) {
+                if (io.KeyShift)
+                    camera.pan(io.MouseDelta.x * fbs_x, io.MouseDelta.y * fbs_y, (float)vh);
+                else
+                    camera.orbit(io.MouseDelta.x, io.MouseDelta.y);
+            }
+            if ((press_in_view[1] && ImGui::IsMouseDown(1)) || (press_in_view[2] && ImGui::IsMouseDown(2)))
+                camera.pan(io.MouseDelta.x * fbs_x, io.MouseDelta.y * fbs_y, (float)vh);
+            if (over_view && io.MouseWheel != 0) camera.zoom(io.MouseWheel);
+            if (over_view && ImGui::IsMouseDoubleClicked(0)) {   // recentre on the surface point there
+                PickHit hit = picker.pick(scene, view_params(), 3u, fb_w, fb_h, px, py);
+                if (hit.mesh >= 0) camera.pivot = hit.point;
+            }
+            // A click picks when it ends, and only if the mouse did not travel (not the end of a drag).
+            const float thr = io.MouseDragThreshold;
+            if (ImGui::IsMouseReleased(0) && press_in_view[0] && !press_was_double &&
+                io.MouseDragMaxDistanceSqr[0] < thr * thr && s.view.contains(m.x, m.y)) {
+                PickHit hit = picker.pick(scene, view_params(), 1u << s.direction, fb_w, fb_h, px, py);
+                s.req.select = hit.mesh == s.direction ? hit.triangle : -1;
+            }
+            for (int b = 0; b < 3; ++b)
+                if (ImGui::IsMouseReleased(b)) press_in_view[b] = false;
+            if (!io.WantCaptureKeyboard) {
+                if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) s.req.home = true;
+                if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) s.req.screenshot = true;
+            }
+        }
+
+        // ---- 5. Panels and the view overlay
+        const ViewParams params = view_params();
+        draw_panels(s);
+        draw_view_overlay(s, scene, params.mvp);
+
+        // ---- 6. Act on the panels' requests
+        Requests req = s.req;
+        s.req = Requests{};
+        s.req.screenshot = req.screenshot;   // handled after rendering (step 8)
+        if (req.cancel) compute.cancel();
+        if (req.load) {   // a new pair from the file panel or dropped files
+            for (int side = 0; side < 2; ++side) {
+                s.path[side] = s.edit_path[side] = req.load_path[side];
+                s.name[side] = fs::path(s.path[side]).filename().string();
+            }
+            s.demo = s.path[0] == s.demo_path[0] && s.path[1] == s.demo_path[1];
+            s.errors.clear();
+            s.selected[0] = s.selected[1] = -1;
+            s.trace[0].reset();
+            s.trace[1].reset();
+            s.scene.reset();
+            scene.clear();
+            req.recompute = true;
+        }
+        if (req.recompute) {
+            s.computed = s.cancelled = false;
+            s.range[0].valid = s.range[1].valid = false;
+            compute_done = false;
+            compute.start(s.path[0], s.path[1]);
+        }
+        if (req.home && scene.loaded()) camera.frame(scene.box_lo(), scene.box_hi(), aspect);
+        if (req.clear_errors) s.errors.clear();
+        if (req.set_direction >= 0) set_direction(s, req.set_direction);
+        if (req.select >= -1) s.selected[s.direction] = req.select;
+
+        // ---- 7. Render: the 3D view, then ImGui on top
+        glViewport(0, 0, fb_w, fb_h);
+        glClearColor(kClearColor[0], kClearColor[1], kClearColor[2], kClearColor[3]);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        scene.draw(params);
+        ImGui::Render();
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+        // ---- 8. Screenshots: read the back buffer before it is swapped
+        if (s.req.screenshot) {
+            s.req.screenshot = false;
+            std::string name = timestamped_png_name();
+            s.status = save_framebuffer_png(name, fb_w, fb_h) ? "saved " + name : "could not write " + name;
+        }
+        if (s.headless) {
+            const int d = s.direction;
+            const long t = s.selected[d];
+            const bool errored = !s.errors.empty();
+            const bool traced = t < 0 || (s.trace[d] && s.trace[d]->target == (uint32_t)t);
+            const bool ready = compute_done && !compute.running() &&
+                               (errored || (target_applied && script_pos >= script.size() && traced && !trace.running()));
+            if (!ready) settle = 0;
+            if (ready && ++settle > 4) {   // a few frames for ImGui windows to size themselves
+                if (!save_framebuffer_png(opt.screenshot, fb_w, fb_h)) {
+                    std::fprintf(stderr, "hlens: %s: cannot write the PNG\n", opt.screenshot.c_str());
+                    exit_code = 1;
+                } else {
+                    exit_code = s.errors.empty() ? 0 : 2;
+                    if (exit_code == 0) std::printf("%s\n", state_json(s, camera, fb_w, fb_h, vx, vw).c_str());
+                }
+                break;
+            }
+        }
+
+        // ---- 9. Present
+        glfwSwapBuffers(window);
+    }
+
+    // ---- Clean-up: stop the jobs first (they may still be reading the meshes)
+    compute.cancel();
+    trace.cancel();
+    picker_ptr.reset();
+    scene_ptr.reset();
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    std::fflush(stdout);
+    if (s.headless && exit_code < 0) {
+        std::fprintf(stderr, "hlens: the window was closed before the screenshot was taken\n");
+        return 1;
+    }
+    return s.headless ? exit_code : 0;
+}

@@ -1,0 +1,501 @@
+#include "panels.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "colormap.h"
+
+namespace hlens::gui {
+
+namespace {
+
+const char* kSide[2] = {"A", "B"};
+const ImU32 kWitnessColor[2] = {IM_COL32(255, 150, 40, 255), IM_COL32(70, 200, 255, 255)};
+
+float em() { return ImGui::GetFontSize(); }
+
+std::string fmt(const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+}
+
+// A label in the first column of a two-column table row, a value in the second.
+void row(const char* label, const std::string& value, const char* tooltip = nullptr) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextDisabled("%s", label);
+    ImGui::TableSetColumnIndex(1);
+    ImGui::TextUnformatted(value.c_str());
+    if (tooltip && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+}
+
+void files_section(AppState& s) {
+    for (int side = 0; side < 2; ++side) {
+        ImGui::Text("%s:", kSide[side]);
+        ImGui::SameLine();
+        ImGui::TextUnformatted(s.name[side].c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.path[side].c_str());
+        if (s.scene) {
+            const TriangleMesh& m = s.scene->mesh[side];
+            ImGui::SameLine();
+            ImGui::TextDisabled("%zu tri, %zu vert", m.num_triangles(), m.num_used_vertices());
+        }
+    }
+}
+
+void progress_section(AppState& s) {
+    if (s.computing) {
+        char overlay[128];
+        if (s.progress >= 0)
+            std::snprintf(overlay, sizeof overlay, "%s  %.0f%%  %.1f s", s.phase.c_str(), 100 * s.progress, s.elapsed);
+        else
+            std::snprintf(overlay, sizeof overlay, "%s  %.1f s", s.phase.c_str(), s.elapsed);
+        float frac = s.progress >= 0 ? (float)s.progress : (float)std::fmod(s.elapsed * 0.5, 1.0);
+        ImGui::ProgressBar(frac, ImVec2(-6 * em(), 0), overlay);
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel", ImVec2(-1, 0))) s.req.cancel = true;
+    } else if (s.computed) {
+        ImGui::TextDisabled("Computed in %.2f s", s.result.seconds);
+        ImGui::SameLine(ImGui::GetContentRegionAvail().x - 6 * em());
+        if (ImGui::Button("Recompute", ImVec2(-1, 0))) s.req.recompute = true;
+    } else if (s.cancelled) {
+        ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "Cancelled");
+        ImGui::SameLine(ImGui::GetContentRegionAvail().x - 6 * em());
+        if (ImGui::Button("Recompute", ImVec2(-1, 0))) s.req.recompute = true;
+    } else if (!s.errors.empty()) {
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "Not loaded (see the error panel)");
+    }
+}
+
+void distances_section(AppState& s) {
+    if (!ImGui::CollapsingHeader("Distances", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    if (!s.computed) {
+        ImGui::TextDisabled(s.computing ? "computing..." : "not computed");
+        return;
+    }
+    for (int d = 0; d < 2; ++d) {
+        const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+        ImGui::PushID(d);
+        ImGui::PushStyleColor(ImGuiCol_CheckMark, ImGui::ColorConvertU32ToFloat4(kWitnessColor[d]));
+        ImGui::Checkbox("##witness", &s.show_witness[d]);
+        ImGui::PopStyleColor();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("show the witness point and segment");
+        ImGui::SameLine();
+        ImGui::Text("h(%s,%s) = %.15g", kSide[d], kSide[1 - d], r.distance);
+        if (ImGui::BeginTable("interval", 2, ImGuiTableFlags_SizingFixedFit)) {
+            ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, 4.5f * em());
+            row("lower", fmt("%.17g", r.lower), "certified: the true h is at least this");
+            row("upper", fmt("%.17g", r.upper), "certified: the true h is at most this");
+            char t[96];
+            std::snprintf(t, sizeof t, "triangle %u of %s", r.target, kSide[d]);
+            row("witness", t, "the target triangle where h is attained (from_point)");
+            ImGui::EndTable();
+        }
+        ImGui::PopID();
+    }
+    const bool ab = s.result.a_to_b.distance >= s.result.b_to_a.distance;
+    ImGui::Separator();
+    ImGui::Text("Hausdorff = %.15g", s.result.hausdorff);
+    ImGui::SameLine();
+    ImGui::TextDisabled(ab ? "h(A,B)" : "h(B,A)");
+}
+
+void direction_section(AppState& s) {
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Measure");
+    ImGui::SameLine();
+    int dir = s.direction;
+    if (ImGui::RadioButton("A to B", &dir, 0)) s.req.set_direction = 0;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("B to A", &dir, 1)) s.req.set_direction = 1;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the measured mesh carries the colour map and the targets");
+}
+
+void colour_bar(const ColourRange& r) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImVec2 p = ImGui::GetCursorScreenPos();
+    float w = ImGui::GetContentRegionAvail().x, h = 1.1f * em();
+    const auto& table = colormap_table();
+    const int n = 64;
+    for (int i = 0; i < n; ++i) {
+        auto c0 = table[(size_t)i * (kColormapSize - 1) / n];
+        auto c1 = table[(size_t)(i + 1) * (kColormapSize - 1) / n];
+        ImU32 a = IM_COL32(c0[0], c0[1], c0[2], 255), b = IM_COL32(c1[0], c1[1], c1[2], 255);
+        float x0 = p.x + w * i / n, x1 = p.x + w * (i + 1) / n;
+        dl->AddRectFilledMultiColor(ImVec2(x0, p.y), ImVec2(x1, p.y + h), a, b, b, a);
+    }
+    dl->AddRect(p, ImVec2(p.x + w, p.y + h), IM_COL32(0, 0, 0, 255));
+    ImGui::Dummy(ImVec2(w, h));
+    // Tick labels: low, middle, high.
+    char lo[32], mid[32], hi[32];
+    std::snprintf(lo, sizeof lo, "%.4g", r.lo);
+    std::snprintf(mid, sizeof mid, "%.4g", 0.5 * (r.lo + r.hi));
+    std::snprintf(hi, sizeof hi, "%.4g", r.hi);
+    float y = ImGui::GetCursorPosY();
+    float x0 = ImGui::GetCursorPosX();
+    ImGui::TextUnformatted(lo);
+    ImGui::SetCursorPos(ImVec2(x0 + 0.5f * (w - ImGui::CalcTextSize(mid).x), y));
+    ImGui::TextUnformatted(mid);
+    ImGui::SetCursorPos(ImVec2(x0 + w - ImGui::CalcTextSize(hi).x, y));
+    ImGui::TextUnformatted(hi);
+}
+
+void colormap_section(AppState& s) {
+    const int d = s.direction;
+    char title[96];
+    std::snprintf(title, sizeof title, "Colour map: max distance on %s###colormap", kSide[d]);
+    if (!ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen)) return;
+    ColourRange& r = s.range[d];
+    if (!r.valid) {
+        ImGui::TextDisabled("available once h(%s,%s) is computed", kSide[d], kSide[1 - d]);
+        return;
+    }
+    ImGui::Checkbox("show", &s.show_colormap);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-4.5f * em());
+    float speed = std::max(1e-6f, (r.data_hi - r.data_lo) * 0.002f);
+    ImGui::DragFloatRange2("##range", &r.lo, &r.hi, speed, 0, 0, "%.5g", "%.5g");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("colour map range (drag, or double-click to type)");
+    ImGui::SameLine();
+    if (ImGui::Button("Reset", ImVec2(-1, 0))) {
+        r.lo = r.data_lo;
+        r.hi = r.data_hi;
+    }
+    colour_bar(r);
+}
+
+void meshes_section(AppState& s) {
+    if (!ImGui::CollapsingHeader("Meshes", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    static const char* modes[] = {"Solid", "Solid+edges", "Wireframe"};
+    for (int side = 0; side < 2; ++side) {
+        MeshStyle& st = s.style[side];
+        ImGui::PushID(side);
+        ImGui::Checkbox(kSide[side], &st.visible);
+        ImGui::SameLine();
+        ImGui::ColorEdit3("##color", st.color, ImGuiColorEditFlags_NoInputs);
+        if (side == s.direction && s.show_colormap && s.range[side].valid && ImGui::IsItemHovered())
+            ImGui::SetTooltip("colour used when the colour map is off");
+        ImGui::SameLine();
+        int mode = (int)st.mode;
+        ImGui::SetNextItemWidth(8.6f * em());
+        if (ImGui::Combo("##mode", &mode, modes, 3)) {
+            st.mode = (DrawMode)mode;
+            st.touched = true;
+        }
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(-1);
+        if (ImGui::SliderFloat("##opacity", &st.opacity, 0.05f, 1.0f, "opacity %.2f")) st.touched = true;
+        ImGui::PopID();
+    }
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("Up axis");
+    ImGui::SameLine();
+    int up = s.up_axis;
+    ImGui::RadioButton("+Y", &up, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("+Z", &up, 2);
+    if (up != s.up_axis) {
+        s.up_axis = up;
+        s.req.home = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Reset view (Home)", ImVec2(-1, 0))) s.req.home = true;
+}
+
+void target_contents(AppState& s);
+
+// The target panel: its own window at the top-right of the view, so it stays visible whatever the
+// sidebar's scroll position (the domain view, timeline and event log will sit next to it).
+void target_window(AppState& s) {
+    if (!s.scene) return;
+    const int d = s.direction;
+    const ViewRect& v = s.view;
+    const float w = std::min(19 * em(), 0.5f * v.w);
+    ImGui::SetNextWindowPos(ImVec2(v.x + v.w - 0.5f * em(), v.y + 0.5f * em()), ImGuiCond_Always, ImVec2(1, 0));
+    ImGui::SetNextWindowSize(ImVec2(w, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.88f);
+    char title[64];
+    std::snprintf(title, sizeof title, "Target T' (a triangle of %s)###target", kSide[d]);
+    ImGui::Begin(title, nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
+    target_contents(s);
+    ImGui::End();
+}
+
+void target_contents(AppState& s) {
+    const int d = s.direction;
+    const long n = (long)s.scene->mesh[d].num_triangles();
+    int index = (int)s.selected[d];
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("index");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(8 * em());
+    if (ImGui::InputInt("##index", &index, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        if (index >= 0 && index < n) s.req.select = index;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Clear", ImVec2(-1, 0))) s.req.select = -1;
+    if (s.selected[d] < 0) {
+        ImGui::TextDisabled("Click a triangle of %s.", kSide[d]);
+        return;
+    }
+    const long t = s.selected[d];
+    if (ImGui::BeginTable("target", 2, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, 6 * em());
+        const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+        if (s.computed && (size_t)t < r.target_max.size()) {
+            bool exact = (size_t)t < r.target_exact.size() && r.target_exact[t];
+            row("target_max", fmt("%.17g", r.target_max[t]),
+                exact ? "max distance over T' (exact)"
+                      : "fast mode skipped this target: an upper bound, below the result");
+            row("", exact ? "exact" : "upper bound");
+        }
+        ImGui::EndTable();
+    }
+    ImGui::TextUnformatted("Trace (TargetSolver)");
+    if (s.trace_running && (!s.trace[d] || s.trace[d]->target != (uint32_t)t)) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("running...");
+        return;
+    }
+    if (!s.trace[d] || s.trace[d]->target != (uint32_t)t) return;
+    const TraceSummary& tr = *s.trace[d];
+    if (!tr.error.empty()) {
+        ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "failed: %s", tr.error.c_str());
+        return;
+    }
+    if (ImGui::BeginTable("trace", 4, ImGuiTableFlags_SizingFixedFit)) {
+        auto cell = [](const char* k, long v) {
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", k);
+            ImGui::TableNextColumn();
+            ImGui::Text("%ld", v);
+        };
+        cell("insertions", tr.insertions);
+        cell("domains", tr.domains);
+        cell("arcs", tr.arcs);
+        cell("vertices", tr.vertices);
+        ImGui::EndTable();
+    }
+    if (ImGui::BeginTable("tracemax", 2, ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, 6 * em());
+        row("max", fmt("%.17g", tr.max), "sqrt of the maximum of d^2 over T'");
+        row("time", fmt("%.3f s", tr.seconds));
+        ImGui::EndTable();
+    }
+    if (tr.degenerate) ImGui::TextDisabled("degenerate target: handled as its edges");
+    if (tr.cancelled) ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "cancelled");
+}
+
+void open_section(AppState& s) {
+    if (!ImGui::CollapsingHeader("Open meshes")) return;
+    for (int side = 0; side < 2; ++side) {
+        ImGui::PushID(side);
+        ImGui::AlignTextToFramePadding();
+        ImGui::TextUnformatted(kSide[side]);
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(-4.5f * em());
+        ImGui::InputTextWithHint("##path", "path to a mesh (.obj .ply .stl .off .gltf .glb)", &s.edit_path[side]);
+        ImGui::SameLine();
+        if (ImGui::Button("Recent", ImVec2(-1, 0))) ImGui::OpenPopup("recent");
+        if (ImGui::BeginPopup("recent")) {
+            if (s.recent.empty()) ImGui::TextDisabled("no recent files");
+            for (const std::string& r : s.recent)
+                if (ImGui::Selectable(r.c_str())) s.edit_path[side] = r;
+            ImGui::EndPopup();
+        }
+        ImGui::PopID();
+    }
+    const bool ok = !s.edit_path[0].empty() && !s.edit_path[1].empty();
+    if (!ok) ImGui::BeginDisabled();
+    if (ImGui::Button("Load")) {
+        s.req.load = true;
+        s.req.load_path[0] = s.edit_path[0];
+        s.req.load_path[1] = s.edit_path[1];
+    }
+    if (!ok) ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Swap")) std::swap(s.edit_path[0], s.edit_path[1]);
+    ImGui::SameLine();
+    if (ImGui::Button("Demo pair")) {
+        s.edit_path[0] = s.demo_path[0];
+        s.edit_path[1] = s.demo_path[1];
+    }
+    ImGui::TextDisabled("or drop files on the window");
+}
+
+// Files dropped on the window: ask which side they are.
+void drop_popup(AppState& s) {
+    const char* id = "Load dropped files";
+    if (!s.dropped.empty() && !ImGui::IsPopupOpen(id)) ImGui::OpenPopup(id);
+    if (!ImGui::BeginPopupModal(id, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+    auto load = [&](const std::string& a, const std::string& b) {
+        s.req.load = true;
+        s.req.load_path[0] = a;
+        s.req.load_path[1] = b;
+        s.dropped.clear();
+        ImGui::CloseCurrentPopup();
+    };
+    if (s.dropped.size() == 1) {
+        ImGui::Text("Open %s as", s.dropped[0].c_str());
+        if (ImGui::Button("A", ImVec2(5 * em(), 0))) load(s.dropped[0], s.path[1]);
+        ImGui::SameLine();
+        if (ImGui::Button("B", ImVec2(5 * em(), 0))) load(s.path[0], s.dropped[0]);
+    } else if (s.dropped.size() >= 2) {
+        ImGui::Text("A: %s", s.dropped[0].c_str());
+        ImGui::Text("B: %s", s.dropped[1].c_str());
+        if (s.dropped.size() > 2) ImGui::TextDisabled("(only the first two files are used)");
+        if (ImGui::Button("Open", ImVec2(5 * em(), 0))) load(s.dropped[0], s.dropped[1]);
+        ImGui::SameLine();
+        if (ImGui::Button("Swap", ImVec2(5 * em(), 0))) std::swap(s.dropped[0], s.dropped[1]);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(5 * em(), 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+        s.dropped.clear();
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+}
+
+void help_section() {
+    if (!ImGui::CollapsingHeader("Help")) return;
+    ImGui::BulletText("left-drag: orbit");
+    ImGui::BulletText("right-drag or shift+left-drag: pan");
+    ImGui::BulletText("wheel: zoom");
+    ImGui::BulletText("click: pick the target T'");
+    ImGui::BulletText("double-click: recentre there");
+    ImGui::BulletText("Home: reset the view");
+    ImGui::BulletText("F12: save hlens-<time>.png");
+}
+
+void error_panel(AppState& s) {
+    if (s.errors.empty()) return;
+    const ViewRect& v = s.view;
+    ImGui::SetNextWindowPos(ImVec2(v.x + 0.5f * v.w, v.y + 0.4f * v.h), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSize(ImVec2(std::min(34 * em(), v.w - 2 * em()), 0), ImGuiCond_Always);
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(kErrorBg[0], kErrorBg[1], kErrorBg[2], kErrorBg[3]));
+    ImGui::PushStyleColor(ImGuiCol_TitleBg, ImVec4(0.70f, 0.15f, 0.15f, 1));
+    ImGui::PushStyleColor(ImGuiCol_TitleBgActive, ImVec4(0.70f, 0.15f, 0.15f, 1));
+    ImGui::PushStyleColor(ImGuiCol_Border, ImVec4(1, 0.5f, 0.5f, 1));
+    ImGui::Begin("Error", nullptr,
+                 ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoSavedSettings);
+    for (size_t i = 0; i < s.errors.size(); ++i) {
+        const AppError& e = s.errors[i];
+        if (i) ImGui::Separator();
+        ImGui::TextUnformatted(e.title.c_str());
+        if (!e.file.empty()) {
+            ImGui::TextDisabled("File:");
+            ImGui::SameLine();
+            ImGui::TextWrapped("%s", e.file.c_str());
+        }
+        ImGui::TextDisabled("Reason:");
+        ImGui::SameLine();
+        ImGui::TextWrapped("%s", e.reason.c_str());
+    }
+    if (!s.headless) {
+        ImGui::Spacing();
+        if (ImGui::Button("Dismiss")) s.req.clear_errors = true;
+    }
+    ImGui::End();
+    ImGui::PopStyleColor(4);
+}
+
+bool project(const glm::mat4& mvp, const ViewRect& v, const glm::vec3& p, ImVec2& out) {
+    glm::vec4 c = mvp * glm::vec4(p, 1.0f);
+    if (c.w <= 1e-7f) return false;
+    out = ImVec2(v.x + (0.5f + 0.5f * c.x / c.w) * v.w, v.y + (0.5f - 0.5f * c.y / c.w) * v.h);
+    return true;
+}
+
+}  // namespace
+
+void layout(AppState& s, float display_w, float display_h) {
+    s.sidebar_width = std::min(std::round(23 * em()), std::round(0.6f * display_w));
+    s.view = ViewRect{s.sidebar_width, 0, std::max(1.0f, display_w - s.sidebar_width), std::max(1.0f, display_h)};
+}
+
+void draw_panels(AppState& s) {
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(s.sidebar_width, s.view.h), ImGuiCond_Always);
+    ImGui::Begin("Hausdorff Lens", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings);
+    files_section(s);
+    progress_section(s);
+    distances_section(s);
+    ImGui::Separator();
+    direction_section(s);
+    colormap_section(s);
+    meshes_section(s);
+    open_section(s);
+    help_section();
+    if (!s.status.empty()) {
+        ImGui::Separator();
+        ImGui::TextDisabled("%s", s.status.c_str());
+    }
+    ImGui::End();
+    target_window(s);
+    error_panel(s);
+    drop_popup(s);
+}
+
+void draw_view_overlay(const AppState& s, const Scene& scene, const glm::mat4& mvp) {
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    const ViewRect& v = s.view;
+    dl->PushClipRect(ImVec2(v.x, v.y), ImVec2(v.x + v.w, v.y + v.h), false);
+    const float r = 0.38f * em();
+    if (scene.loaded() && s.scene) {
+        // The selected target: outline, and where its maximum is.
+        const int d = s.direction;
+        const long t = s.selected[d];
+        if (t >= 0 && (size_t)t < s.scene->mesh[d].num_triangles()) {
+            auto c = s.scene->mesh[d].corners((size_t)t);
+            ImVec2 q[3];
+            bool ok = true;
+            for (int i = 0; i < 3; ++i) ok = ok && project(mvp, v, scene.local(c[i]), q[i]);
+            if (ok) dl->AddPolyline(q, 3, IM_COL32(255, 255, 255, 255), ImDrawFlags_Closed, 2.0f);
+            ImVec2 m;
+            if (s.trace[d] && s.trace[d]->target == (uint32_t)t && s.trace[d]->error.empty() &&
+                project(mvp, v, scene.local(s.trace[d]->max_point), m)) {
+                dl->AddLine(ImVec2(m.x - r, m.y - r), ImVec2(m.x + r, m.y + r), IM_COL32(255, 255, 255, 255), 2);
+                dl->AddLine(ImVec2(m.x - r, m.y + r), ImVec2(m.x + r, m.y - r), IM_COL32(255, 255, 255, 255), 2);
+            }
+        }
+        // Witnesses: from_point (filled) on the measured mesh, to_point (ring) on the other.
+        if (s.computed)
+            for (int dd = 0; dd < 2; ++dd) {
+                if (!s.show_witness[dd]) continue;
+                const OneSidedResult& w = dd == 0 ? s.result.a_to_b : s.result.b_to_a;
+                ImVec2 a, b;
+                if (!project(mvp, v, scene.local(w.from_point), a) || !project(mvp, v, scene.local(w.to_point), b))
+                    continue;
+                dl->AddLine(a, b, IM_COL32(0, 0, 0, 200), 4.0f);
+                dl->AddLine(a, b, kWitnessColor[dd], 2.0f);
+                dl->AddCircleFilled(a, r, kWitnessColor[dd]);
+                dl->AddCircle(a, r, IM_COL32(0, 0, 0, 255), 0, 1.5f);
+                dl->AddCircle(b, r, kWitnessColor[dd], 0, 2.0f);
+                char label[32];
+                std::snprintf(label, sizeof label, "h(%s,%s)", kSide[dd], kSide[1 - dd]);
+                ImVec2 lp(a.x + 1.6f * r, a.y - 2.6f * r), ls = ImGui::CalcTextSize(label);
+                dl->AddRectFilled(ImVec2(lp.x - 3, lp.y - 1), ImVec2(lp.x + ls.x + 3, lp.y + ls.y + 1),
+                                  IM_COL32(20, 20, 24, 210), 3.0f);
+                dl->AddText(lp, kWitnessColor[dd], label);
+            }
+    }
+    const char* hint = "drag: orbit  right-drag: pan  wheel: zoom  click: pick";
+    ImVec2 ts = ImGui::CalcTextSize(hint);
+    if (scene.loaded() && ts.x + em() < v.w)
+        dl->AddText(ImVec2(v.x + 0.5f * em(), v.y + v.h - ts.y - 0.4f * em()), IM_COL32(170, 170, 180, 255), hint);
+    dl->PopClipRect();
+}
+
+}  // namespace hlens::gui

@@ -1,0 +1,33 @@
+// Picking: the meshes are drawn into an offscreen framebuffer that stores, per pixel, the mesh and
+// triangle index (RGBA32UI) and the depth; one pixel is read back under the mouse. Drawn on demand
+// (when a click or double-click ends), never every frame.
+#pragma once
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "gl.h"
+#include "scene.h"
+
+namespace hlens::gui {
+
+struct PickHit {
+    int mesh = -1;       // 0: A, 1: B, -1: background
+    int triangle = -1;
+    glm::vec3 point{0.0f};   // scene-local position of the pixel's surface point
+};
+
+class Picker {
+public:
+    ~Picker();
+    bool init(std::string& error);
+    // mask bit i: mesh i takes part. x, y: framebuffer pixel, GL convention (origin bottom-left).
+    PickHit pick(const Scene& scene, const ViewParams& p, unsigned mask, int fb_width, int fb_height, int x, int y);
+
+private:
+    void resize(int w, int h);
+    GLuint program_ = 0, fbo_ = 0, color_ = 0, depth_ = 0;
+    int w_ = 0, h_ = 0;
+};
+
+}  // namespace hlens::gui

@@ -1,0 +1,38 @@
+// Flat shading with a headlight (two-sided), an optional colour map over the per-triangle value,
+// a highlight for the selected triangle, and the three drawing modes of a mesh.
+#version 330 core
+in vec3 v_position;
+flat in vec3 v_normal;
+flat in float v_value;
+
+uniform vec3 u_eye;            // camera position (scene-local coordinates)
+uniform vec3 u_color;          // mesh colour when the colour map is off
+uniform float u_opacity;
+uniform int u_use_map;         // 1: colour by v_value through u_colormap over [u_lo, u_hi]
+uniform float u_lo;
+uniform float u_hi;
+uniform sampler2D u_colormap;  // 256 x 1, RGB
+uniform int u_selected;        // triangle index to highlight, -1 for none
+uniform int u_mode;            // 0: lit fill, 1: edge overlay (darkened lines), 2: wireframe (unlit lines)
+
+out vec4 frag_color;
+
+void main() {
+    vec3 base = u_color;
+    if (u_use_map == 1) {
+        float t = clamp((v_value - u_lo) / max(u_hi - u_lo, 1e-30), 0.0, 1.0);
+        base = texture(u_colormap, vec2((t * 255.0 + 0.5) / 256.0, 0.5)).rgb;
+    }
+    bool selected = gl_PrimitiveID == u_selected;
+    if (selected) base = vec3(1.0, 0.25, 0.85);
+    vec3 c;
+    if (u_mode == 1) {   // edges: the face colour darkened, so dense meshes keep their colours
+        c = selected ? vec3(1.0) : base * 0.55;
+    } else if (u_mode == 2) {
+        c = base;
+    } else {
+        float ndv = abs(dot(normalize(v_normal), normalize(u_eye - v_position)));
+        c = base * (0.38 + 0.62 * ndv);
+    }
+    frag_color = vec4(c, u_opacity);
+}

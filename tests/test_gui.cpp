@@ -1,0 +1,502 @@
+// Tests of the interactive debugger hlens (app/hlens/), run as a separate process in headless
+// screenshot mode under xvfb-run (Mesa's llvmpipe renders OpenGL without a GPU).
+//
+// Compiled only when the hlens target exists (CMake then defines HLENS_GUI as its path); every
+// test that needs a display is skipped when xvfb-run is not on PATH. Each run writes a PNG, which
+// is read back with stb_image and checked pixel by pixel, and prints the state behind the picture
+// as one JSON line, which is checked against hlens-cli (HLENS_CLI).
+#ifdef HLENS_GUI
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#include <stb_image.h>
+#pragma GCC diagnostic pop
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kGui = HLENS_GUI;
+const std::string kCli = HLENS_CLI;
+const std::string kDemoA = std::string(HLENS_SOURCE_DIR) + "/assets/demo_a.obj";
+const std::string kDemoB = std::string(HLENS_SOURCE_DIR) + "/assets/demo_b.obj";
+
+// The colours hlens promises (app/hlens/panels.h, app/hlens/colormap.cpp), as 8-bit RGB.
+constexpr std::array<int, 3> kClear = {41, 43, 51};        // kClearColor (0.16, 0.17, 0.20)
+constexpr std::array<int, 3> kErrorBg = {128, 23, 23};     // kErrorBg (0.50, 0.09, 0.09)
+constexpr std::array<int, 3> kMapLow = {71, 1, 85};        // viridis at 0
+constexpr std::array<int, 3> kMapHigh = {252, 231, 33};    // viridis at 1
+constexpr std::array<int, 3> kSelected = {255, 64, 217};   // the selected target (1, 0.25, 0.85)
+
+struct Outcome {
+    int code = -1;
+    std::string out, err;
+};
+
+std::string read_file(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+std::string quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+fs::path scratch_dir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    fs::path d = fs::temp_directory_path() /
+                 ("hlens_gui_" + std::to_string(::getpid()) + "_" + (info ? info->name() : "x"));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+// Runs argv with stdout and stderr into files of `dir`; in `cwd` when given.
+Outcome run(const std::vector<std::string>& argv, const fs::path& dir, const fs::path& cwd = {}) {
+    std::string cmd = cwd.empty() ? "" : "cd " + quote(cwd.string()) + " && ";
+    for (const std::string& a : argv) cmd += quote(a) + " ";
+    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+    cmd += ">" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
+    int status = std::system(cmd.c_str());
+    Outcome o;
+    o.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+    o.out = read_file(out);
+    o.err = read_file(err);
+    return o;
+}
+
+bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+
+// hlens <args> --screenshot <png> --size 800x600 under a fresh X server. xvfb-run -a can lose a
+// race for a display number when tests run in parallel: such a start failure is retried.
+Outcome run_gui(std::vector<std::string> args, const fs::path& png, const fs::path& dir, const fs::path& cwd = {}) {
+    std::vector<std::string> argv = {"xvfb-run", "-a", "-s", "-screen 0 1280x800x24", kGui};
+    argv.insert(argv.end(), args.begin(), args.end());
+    argv.insert(argv.end(), {"--screenshot", png.string(), "--size", "800x600"});
+    Outcome o;
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        o = run(argv, dir, cwd);
+        if (o.err.find("Xvfb failed to start") == std::string::npos &&
+            o.err.find("server already running") == std::string::npos)
+            break;
+        ::sleep(1 + attempt);
+    }
+    return o;
+}
+
+struct Image {
+    int w = 0, h = 0;
+    std::vector<unsigned char> rgb;
+    std::array<int, 3> at(int x, int y) const {
+        const unsigned char* p = &rgb[((size_t)y * w + x) * 3];
+        return {p[0], p[1], p[2]};
+    }
+};
+
+Image load_png(const fs::path& p) {
+    Image im;
+    int n = 0;
+    unsigned char* data = stbi_load(p.string().c_str(), &im.w, &im.h, &n, 3);
+    if (data) {
+        im.rgb.assign(data, data + (size_t)im.w * im.h * 3);
+        stbi_image_free(data);
+    }
+    return im;
+}
+
+bool near(const std::array<int, 3>& p, const std::array<int, 3>& c, int tol) {
+    for (int i = 0; i < 3; ++i)
+        if (std::abs(p[i] - c[i]) > tol) return false;
+    return true;
+}
+
+// p is colour c under some shading factor s in [0.3, 1.05] (the view is lit), channel by channel.
+bool shaded(const std::array<int, 3>& p, const std::array<int, 3>& c, int tol) {
+    double pc = 0, cc = 0;
+    for (int i = 0; i < 3; ++i) {
+        pc += double(p[i]) * c[i];
+        cc += double(c[i]) * c[i];
+    }
+    double s = pc / cc;
+    if (s < 0.3 || s > 1.05) return false;
+    for (int i = 0; i < 3; ++i)
+        if (std::fabs(p[i] - s * c[i]) > tol) return false;
+    return true;
+}
+
+int count(const Image& im, int x0, int y0, int x1, int y1, const std::function<bool(std::array<int, 3>)>& pred) {
+    int n = 0;
+    for (int y = std::max(0, y0); y < std::min(im.h, y1); ++y)
+        for (int x = std::max(0, x0); x < std::min(im.w, x1); ++x) n += pred(im.at(x, y));
+    return n;
+}
+
+// ---- reading the flat JSON line of hlens and the one-line JSON of hlens-cli, by key
+std::string raw_value(const std::string& json, const std::string& key, size_t from = 0) {
+    size_t k = json.find("\"" + key + "\": ", from);
+    if (k == std::string::npos) return "";
+    size_t b = k + key.size() + 4, e = b;
+    int depth = 0;
+    for (; e < json.size(); ++e) {
+        char c = json[e];
+        if (c == '[' || c == '{') ++depth;
+        if (c == ']' || c == '}') {
+            if (depth == 0) break;
+            --depth;
+        }
+        if (c == ',' && depth == 0) break;
+    }
+    return json.substr(b, e - b);
+}
+double num(const std::string& json, const std::string& key, size_t from = 0) {
+    std::string v = raw_value(json, key, from);
+    return v.empty() || v == "null" ? NAN : std::strtod(v.c_str(), nullptr);
+}
+std::vector<int> int_list(const std::string& json, const std::string& key) {
+    std::string v = raw_value(json, key);
+    std::vector<int> r;
+    for (size_t i = 0; i < v.size();) {
+        if (std::isdigit((unsigned char)v[i])) {
+            size_t e = i;
+            r.push_back(std::stoi(v.substr(i), &e));
+            i += e;
+        } else {
+            ++i;
+        }
+    }
+    return r;
+}
+
+struct CliDistance {
+    double a_to_b = NAN, b_to_a = NAN, hausdorff = NAN;
+    long target_ab = -1, target_ba = -1;
+};
+
+CliDistance cli_distance(const fs::path& dir) {
+    Outcome o = run({kCli, "distance", kDemoA, kDemoB, "--json"}, dir);
+    EXPECT_EQ(o.code, 0) << o.err;
+    CliDistance c;
+    size_t ab = o.out.find("\"a_to_b\": {"), ba = o.out.find("\"b_to_a\": {");
+    EXPECT_NE(ab, std::string::npos);
+    EXPECT_NE(ba, std::string::npos);
+    c.a_to_b = num(o.out, "distance", ab);
+    c.b_to_a = num(o.out, "distance", ba);
+    c.target_ab = (long)num(o.out, "target", ab);
+    c.target_ba = (long)num(o.out, "target", ba);
+    c.hausdorff = num(o.out, "hausdorff", o.out.rfind("\"hausdorff\": "));
+    return c;
+}
+
+#define REQUIRE_XVFB() \
+    if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not on PATH"
+
+}  // namespace
+
+TEST(Gui, UsageErrorsExitTwoWithoutADisplay) {
+    fs::path dir = scratch_dir();
+    Outcome o = run({kGui, "--size", "3"}, dir);
+    EXPECT_EQ(o.code, 2);
+    EXPECT_NE(o.err.find("hlens: --size"), std::string::npos) << o.err;
+    o = run({kGui, "only_one.obj"}, dir);
+    EXPECT_EQ(o.code, 2);
+    o = run({kGui, "--direction", "up"}, dir);
+    EXPECT_EQ(o.code, 2);
+    o = run({kGui, "--help"}, dir);
+    EXPECT_EQ(o.code, 0);
+    EXPECT_NE(o.out.find("--screenshot"), std::string::npos);
+}
+
+TEST(Gui, DemoScreenshotShowsTheMeshesAndTheColourMap) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "demo.png";
+    Outcome o = run_gui({}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    Image im = load_png(png);
+    ASSERT_EQ(im.w, 800);
+    ASSERT_EQ(im.h, 600);
+
+    // One JSON line: the state behind the picture, with the view rectangle in image pixels.
+    EXPECT_EQ(std::count(o.out.begin(), o.out.end(), '\n'), 1) << o.out;
+    EXPECT_EQ(raw_value(o.out, "direction"), "\"ab\"");
+    EXPECT_EQ(raw_value(o.out, "target"), "null");
+    std::vector<int> vp = int_list(o.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u) << o.out;
+    const int vx = vp[0], vw = vp[2], vh = vp[3];
+    EXPECT_GT(vx, 0);            // the sidebar is on the left
+    EXPECT_EQ(vx + vw, im.w);
+    EXPECT_EQ(vh, im.h);
+
+    // The clear colour at the bottom-right corner of the view.
+    EXPECT_TRUE(near(im.at(im.w - 3, im.h - 3), kClear, 2));
+    // The meshes are drawn: most of the view's centre is not background.
+    const int cx = vx + vw / 2, cy = vh / 2, r = std::min(vw, vh) / 8;
+    int drawn = count(im, cx - r, cy - r, cx + r, cy + r, [](auto p) { return !near(p, kClear, 6); });
+    EXPECT_GT(drawn, (2 * r) * (2 * r) * 3 / 4);
+    // The colour map is applied to the measured mesh (A): both ends of it appear, lit, in the
+    // view (below the target panel at the top right; the colour bar is in the sidebar).
+    const int x0 = vx + vw / 20, x1 = vx + vw - vw / 20, y0 = vh * 3 / 10, y1 = vh * 19 / 20;
+    int low = count(im, x0, y0, x1, y1, [](auto p) { return shaded(p, kMapLow, 8); });
+    int high = count(im, x0, y0, x1, y1, [](auto p) { return shaded(p, kMapHigh, 8); });
+    EXPECT_GT(low, 30) << "low end of the colour map on the mesh";
+    EXPECT_GT(high, 30) << "high end of the colour map on the mesh";
+    // ... and the colour bar in the sidebar shows both ends unlit.
+    EXPECT_GT(count(im, 0, 0, vx, im.h, [](auto p) { return near(p, kMapLow, 3); }), 10);
+    EXPECT_GT(count(im, 0, 0, vx, im.h, [](auto p) { return near(p, kMapHigh, 3); }), 10);
+    // No error panel.
+    EXPECT_EQ(count(im, 0, 0, im.w, im.h, [](auto p) { return near(p, kErrorBg, 2); }), 0);
+
+    // The distances behind the picture are hlens-cli's.
+    CliDistance cli = cli_distance(dir);
+    EXPECT_NEAR(num(o.out, "hausdorff"), cli.hausdorff, 1e-12);
+    EXPECT_NEAR(num(o.out, "a_to_b"), cli.a_to_b, 1e-12);
+    EXPECT_NEAR(num(o.out, "b_to_a"), cli.b_to_a, 1e-12);
+}
+
+TEST(Gui, MissingMeshShowsTheErrorPanelAndExitsTwo) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "error.png";
+    const std::string missing = (dir / "no_such_mesh.obj").string();
+    Outcome o = run_gui({missing, kDemoB}, png, dir);
+    EXPECT_EQ(o.code, 2) << o.err;
+    EXPECT_NE(o.err.find("hlens: " + missing + ": "), std::string::npos) << o.err;
+    EXPECT_EQ(o.out, "");
+    Image im = load_png(png);
+    ASSERT_EQ(im.w, 800);
+    ASSERT_EQ(im.h, 600);
+    EXPECT_GT(count(im, 0, 0, im.w, im.h, [](auto p) { return near(p, kErrorBg, 2); }), 5000);
+}
+
+TEST(Gui, MalformedMeshShowsTheErrorPanelAndExitsTwo) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "error.png";
+    const fs::path bad = dir / "bad.obj";
+    std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nf 1 2 9\n";
+    Outcome o = run_gui({kDemoA, bad.string()}, png, dir);
+    EXPECT_EQ(o.code, 2) << o.err;
+    EXPECT_NE(o.err.find("hlens: " + bad.string() + ": "), std::string::npos) << o.err;
+    Image im = load_png(png);
+    ASSERT_EQ(im.w, 800);
+    EXPECT_GT(count(im, 0, 0, im.w, im.h, [](auto p) { return near(p, kErrorBg, 2); }), 5000);
+}
+
+TEST(Gui, TargetStateMatchesTheCli) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "target.png";
+    CliDistance cli = cli_distance(dir);
+    ASSERT_GE(cli.target_ab, 0);
+    Outcome o = run_gui({"--target", std::to_string(cli.target_ab)}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(raw_value(o.out, "direction"), "\"ab\"");
+    EXPECT_EQ((long)num(o.out, "target"), cli.target_ab);
+    EXPECT_NEAR(num(o.out, "hausdorff"), cli.hausdorff, 1e-12);
+    // The witness target's maximum is h(A,B), and the trace's maximum agrees.
+    EXPECT_NEAR(num(o.out, "target_max"), cli.a_to_b, 1e-12);
+    EXPECT_NEAR(num(o.out, "trace_max"), cli.a_to_b, 1e-12);
+    // The trace summary is hlens-cli trace's (same grid, same side, same target).
+    Outcome t = run({kCli, "trace", kDemoA, kDemoB, "--target", std::to_string(cli.target_ab), "--json"}, dir);
+    ASSERT_EQ(t.code, 0) << t.err;
+    std::string last = t.out.substr(t.out.rfind("{\"event\": \"final\""));
+    EXPECT_EQ(num(o.out, "insertions"), num(last, "insertions"));
+    EXPECT_EQ(num(o.out, "domains"), num(last, "domains"));
+    EXPECT_EQ(num(o.out, "arcs"), num(last, "arcs"));
+    EXPECT_EQ(num(o.out, "vertices"), num(last, "vertices"));
+    // The selected target is highlighted.
+    Image im = load_png(png);
+    ASSERT_EQ(im.w, 800);
+    std::vector<int> vp = int_list(o.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u);
+    EXPECT_GT(count(im, vp[0], 0, im.w, im.h, [](auto p) { return shaded(p, kSelected, 10); }), 5);
+}
+
+TEST(Gui, DirectionBaColoursAndTargetsB) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "ba.png";
+    CliDistance cli = cli_distance(dir);
+    ASSERT_GE(cli.target_ba, 0);
+    Outcome o = run_gui({"--direction", "ba", "--target", std::to_string(cli.target_ba)}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(raw_value(o.out, "direction"), "\"ba\"");
+    EXPECT_EQ((long)num(o.out, "target"), cli.target_ba);
+    EXPECT_NEAR(num(o.out, "target_max"), cli.b_to_a, 1e-12);
+    EXPECT_NEAR(num(o.out, "trace_max"), cli.b_to_a, 1e-12);
+    EXPECT_GT(num(o.out, "insertions"), 0);
+    EXPECT_GT(num(o.out, "domains"), 0);
+    EXPECT_NEAR(num(o.out, "hausdorff"), cli.hausdorff, 1e-12);
+    Image im = load_png(png);
+    ASSERT_EQ(im.h, 600);
+    std::vector<int> vp = int_list(o.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u);
+    EXPECT_GT(count(im, vp[0], 0, im.w, im.h, [](auto p) { return shaded(p, kSelected, 10); }), 20);
+}
+
+// Mouse input, played through Dear ImGui's input state in headless runs (--click, --drag,
+// --double-click): a click picks through the ID buffer, a drag orbits and does not pick, a
+// double-click recentres on the surface point under the mouse.
+struct DemoView {
+    Image im;
+    int vx = 0, vw = 0, vh = 0;
+    double yaw = NAN;
+};
+
+DemoView plain_demo(const fs::path& dir) {
+    DemoView d;
+    Outcome o = run_gui({}, dir / "plain.png", dir);
+    EXPECT_EQ(o.code, 0) << o.err;
+    d.im = load_png(dir / "plain.png");
+    std::vector<int> vp = int_list(o.out, "viewport");
+    if (vp.size() == 4) {
+        d.vx = vp[0];
+        d.vw = vp[2];
+        d.vh = vp[3];
+    }
+    d.yaw = num(o.out, "yaw");
+    return d;
+}
+
+int selected_near(const Image& im, int x, int y, int r) {
+    return count(im, x - r, y - r, x + r + 1, y + r + 1, [](auto p) { return shaded(p, kSelected, 10); });
+}
+
+TEST(Gui, ClickPicksTheTriangleUnderTheMouse) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir();
+    DemoView d = plain_demo(dir);
+    ASSERT_EQ(d.im.w, 800);
+    const int x = d.vx + d.vw / 2, y = d.vh / 2;
+    ASSERT_FALSE(near(d.im.at(x, y), kClear, 6)) << "the view centre should show the mesh";
+    Outcome o = run_gui({"--click", std::to_string(x) + "," + std::to_string(y)}, dir / "click.png", dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const double t = num(o.out, "target");
+    ASSERT_GE(t, 0) << o.out;
+    EXPECT_LT(t, 512);
+    // The picked triangle is the one drawn under the mouse: it is highlighted there.
+    EXPECT_GT(selected_near(load_png(dir / "click.png"), x, y, 4), 5);
+    // Its trace ran; an exact target_max is the trace's maximum, a skipped one bounds it.
+    const double tm = num(o.out, "target_max"), trm = num(o.out, "trace_max");
+    if (raw_value(o.out, "target_exact") == "true")
+        EXPECT_NEAR(trm, tm, 1e-12);
+    else
+        EXPECT_LE(trm, tm * (1 + 1e-12));
+    EXPECT_GT(num(o.out, "insertions"), 0);
+    EXPECT_NEAR(num(o.out, "yaw"), d.yaw, 1e-12);   // a click does not orbit
+}
+
+TEST(Gui, DragOrbitsAndDoesNotPick) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir();
+    DemoView d = plain_demo(dir);
+    const int x = d.vx + d.vw / 2, y = d.vh / 2;
+    Outcome o = run_gui({"--drag", std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(x + 120) + "," +
+                                       std::to_string(y - 20)},
+                        dir / "drag.png", dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(raw_value(o.out, "target"), "null") << "a click that ended a drag must not pick";
+    EXPECT_GT(std::fabs(num(o.out, "yaw") - d.yaw), 0.3) << "left-drag orbits";
+}
+
+TEST(Gui, ClickOnTheBackgroundClearsTheSelection) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir();
+    DemoView d = plain_demo(dir);
+    // A background pixel of the view, left of the mesh, below the target panel.
+    int bx = -1, by = d.vh / 4;
+    for (int x = d.vx + 5; x < d.vx + d.vw / 3; ++x)
+        if (near(d.im.at(x, by), kClear, 1) && near(d.im.at(x, by + 6), kClear, 1) && near(d.im.at(x, by - 6), kClear, 1)) {
+            bx = x + 4;
+            break;
+        }
+    ASSERT_GE(bx, 0);
+    Outcome o = run_gui({"--target", "258", "--click", std::to_string(bx) + "," + std::to_string(by)}, dir / "bg.png", dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(raw_value(o.out, "target"), "null");
+}
+
+TEST(Gui, DoubleClickRecentresOnTheSurfacePoint) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir();
+    DemoView d = plain_demo(dir);
+    // A point of the mesh away from the view centre.
+    const int x = d.vx + d.vw * 7 / 10, y = d.vh * 55 / 100;
+    ASSERT_FALSE(near(d.im.at(x, y), kClear, 6)) << "the test point should be on the mesh";
+    Outcome o = run_gui({"--double-click", std::to_string(x) + "," + std::to_string(y)}, dir / "dbl.png", dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    // The first click picked the triangle there; the double-click moved that point to the view
+    // centre (and its release did not pick again), so the selected triangle is now at the centre.
+    ASSERT_GE(num(o.out, "target"), 0) << o.out;
+    EXPECT_GT(selected_near(load_png(dir / "dbl.png"), d.vx + d.vw / 2, d.vh / 2, 4), 5);
+}
+
+TEST(Gui, HomeResetsTheCameraAfterADrag) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir();
+    DemoView d = plain_demo(dir);
+    const int x = d.vx + d.vw / 2, y = d.vh / 2;
+    Outcome o = run_gui({"--drag", std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(x - 150) + "," +
+                                       std::to_string(y + 40),
+                         "--key", "home"},
+                        dir / "home.png", dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_NEAR(num(o.out, "yaw"), d.yaw, 1e-6);
+    // The same picture as without the drag (up to the status line, which is not drawn here).
+    Image a = d.im, b = load_png(dir / "home.png");
+    ASSERT_EQ(b.w, a.w);
+    int differ = 0;
+    for (int yy = 0; yy < a.h; ++yy)
+        for (int xx = d.vx; xx < a.w; ++xx) differ += !near(a.at(xx, yy), b.at(xx, yy), 2);
+    EXPECT_LT(differ, 50);
+}
+
+TEST(Gui, F12SavesAPngInTheCurrentDirectory) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), cwd = dir / "cwd";
+    fs::create_directories(cwd);
+    Outcome o = run_gui({kDemoA, kDemoB, "--key", "f12"}, dir / "final.png", dir, cwd);
+    ASSERT_EQ(o.code, 0) << o.err;
+    std::vector<fs::path> saved;
+    for (const auto& e : fs::directory_iterator(cwd)) saved.push_back(e.path());
+    ASSERT_EQ(saved.size(), 1u);
+    const std::string name = saved[0].filename().string();
+    EXPECT_EQ(name.rfind("hlens-", 0), 0u) << name;
+    EXPECT_EQ(saved[0].extension(), ".png");
+    Image im = load_png(saved[0]);
+    EXPECT_EQ(im.w, 800);
+    EXPECT_EQ(im.h, 600);
+}
+
+TEST(Gui, TargetOutOfRangeShowsTheErrorPanelAndExitsTwo) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "range.png";
+    Outcome o = run_gui({"--target", "100000"}, png, dir);
+    EXPECT_EQ(o.code, 2) << o.err;
+    EXPECT_NE(o.err.find("out of range"), std::string::npos) << o.err;
+    Image im = load_png(png);
+    ASSERT_EQ(im.w, 800);
+    EXPECT_GT(count(im, 0, 0, im.w, im.h, [](auto p) { return near(p, kErrorBg, 2); }), 5000);
+}
+
+#endif  // HLENS_GUI
