@@ -70,6 +70,14 @@ struct Progress {
     }
 };
 
+// The largest coordinate magnitude of either mesh: rounding of positions scales with it.
+double coordinate_magnitude(const TriangleMesh& A, const TriangleMesh& B) {
+    Box3 box = A.bounds();
+    box.add(B.bounds());
+    return std::max({std::fabs(box.lo.x), std::fabs(box.lo.y), std::fabs(box.lo.z), std::fabs(box.hi.x), std::fabs(box.hi.y),
+                     std::fabs(box.hi.z)});
+}
+
 }  // namespace
 
 OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions& opt) {
@@ -149,12 +157,15 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
         std::vector<uint32_t> order(n);
         std::iota(order.begin(), order.end(), 0u);
         std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return U[x] > U[y]; });
+        const double tie_abs = 1e-11 * (coordinate_magnitude(A, B) + 1);
         Progress prog{opt, n};
         parallel_for(n, threads, opt.cancel, [&](size_t k) {
             uint32_t t = order[k];
-            // With a relative margin far above rounding: a target whose maximum could equal the
-            // result (a tie, or the same value computed another way) is always solved exactly.
-            double l = L.load() * (1 - kTieMargin);
+            // With a margin far above rounding (relative, and absolute for coordinates far from
+            // the origin): a target whose maximum could equal the result (a tie, or the same value
+            // computed another way) is always solved exactly.
+            double lr = std::max(0.0, std::sqrt(L.load()) * (1 - kTieMargin) - tie_abs);
+            double l = lr * lr;
             if (U[t] < l) {
                 r.target_max[t] = std::sqrt(U[t]);
             } else {
@@ -165,6 +176,19 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
         });
     }
     r.cancelled = opt.cancel && opt.cancel->load();
+    if (opt.mode == Mode::Fast && !r.cancelled && n > 0 &&
+        std::none_of(value_sq.begin(), value_sq.end(), [](double v) { return v >= 0; })) {
+        // Safety net (never expected): solve exactly in decreasing order of the upper bound until
+        // the bound falls below the best exact value.
+        std::vector<uint32_t> order(n);
+        std::iota(order.begin(), order.end(), 0u);
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return r.target_max[x] > r.target_max[y]; });
+        double best_exact = -1;
+        for (uint32_t t : order) {
+            if (r.target_max[t] * r.target_max[t] < best_exact) break;
+            best_exact = std::max(best_exact, solve(t, -1));
+        }
+    }
 
     // The witness: the largest exact value, the lowest index among equals.
     double best = -1;
@@ -183,8 +207,7 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
         // upper: the domain meshes' maximum, widened by a bound on the rounding of coordinates.
         Box3 box = A.bounds();
         box.add(B.bounds());
-        double coord = std::max({std::fabs(box.lo.x), std::fabs(box.lo.y), std::fabs(box.lo.z), std::fabs(box.hi.x),
-                                 std::fabs(box.hi.y), std::fabs(box.hi.z)});
+        double coord = coordinate_magnitude(A, B);
         r.upper = r.distance;
         for (size_t t = 0; t < n; ++t)  // a sliver target's value may be short by its height
             if (slack[t] > 0 && value_sq[t] >= 0) r.upper = std::max(r.upper, std::sqrt(value_sq[t]) + slack[t]);

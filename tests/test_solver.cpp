@@ -416,3 +416,26 @@ TEST(ExportCase, ReproducesTheTargetsMaximumOnItsOwn) {
         EXPECT_NEAR(alone.max_sq(), whole.max_sq(), 1e-12 * whole.max_sq());
     }
 }
+
+TEST(Driver, FarFromTheOrigin) {
+    // The same pair moved to coordinates around 1e6: rounding of positions grows with them, and
+    // fast mode must still solve the targets that hold the result (it once skipped them all).
+    std::mt19937 rng(29);
+    TriangleMesh A = height_field(6, [](double x, double y) { return 0.2 * std::sin(2 * x + y); });
+    TriangleMesh B = random_triangle_soup(rng, 30, 0.4, {0, 0, 0}, 1.0);
+    HausdorffResult near = hausdorff(A, B);
+    Vec3 shift{1e6, -2e6, 5e5};
+    for (Vec3& p : A.positions) p += shift;
+    for (Vec3& p : B.positions) p += shift;
+    HausdorffOptions paper;
+    paper.mode = Mode::Paper;
+    HausdorffResult fast = hausdorff(A, B), full = hausdorff(A, B, paper);
+    EXPECT_DOUBLE_EQ(fast.a_to_b.distance, full.a_to_b.distance);
+    EXPECT_DOUBLE_EQ(fast.b_to_a.distance, full.b_to_a.distance);
+    // Positions moved by 1e6 carry rounding of about 1e-10: the distances agree to that.
+    EXPECT_NEAR(fast.a_to_b.distance, near.a_to_b.distance, 1e-8);
+    EXPECT_NEAR(fast.b_to_a.distance, near.b_to_a.distance, 1e-8);
+    EXPECT_GT(fast.b_to_a.distance, 0.1);
+    EXPECT_LE(fast.a_to_b.lower, fast.a_to_b.distance);
+    EXPECT_GE(fast.a_to_b.upper, fast.a_to_b.distance);
+}
