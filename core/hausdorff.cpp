@@ -137,15 +137,16 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
             auto c = A.corners(t);
             const Tri& f = A.triangles[t];
             Vec3 p[6] = {c[0], c[1], c[2], 0.5 * (c[0] + c[1]), 0.5 * (c[1] + c[2]), 0.5 * (c[2] + c[0])};
-            uint32_t near[6] = {nearest_tri[f[0]], nearest_tri[f[1]], nearest_tri[f[2]], 0, 0, 0};
-            for (int k = 3; k < 6; ++k) near[k] = grid.nearest(1 - side, p[k], near[k - 3]).triangle;
+            // Any set of triangles gives a bound; the corners' nearest ones need no new query
+            // (a query far from B is the expensive part when the meshes are far apart).
+            const uint32_t near[3] = {nearest_tri[f[0]], nearest_tri[f[1]], nearest_tri[f[2]]};
             static const int sub[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
             double u = 0;
             for (const auto& S : sub) {
                 double best = HUGE_VAL;
-                for (int i : S) {
-                    if (near[i] == UINT32_MAX) continue;
-                    auto sc = B.corners(near[i]);
+                for (uint32_t cand : near) {
+                    if (cand == UINT32_MAX) continue;
+                    auto sc = B.corners(cand);
                     double m = 0;
                     for (int j : S) m = std::max(m, closest_point_on_triangle(p[j], sc[0], sc[1], sc[2]).dist2);
                     best = std::min(best, m);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
-#include <unordered_set>
 
 #include "point_triangle.h"
 
@@ -27,13 +26,43 @@ Event make_event(EventKind k) {
 }
 }  // namespace
 
+// Which voxels and sources a target has seen: stamp arrays (one entry per voxel and per source,
+// reused across targets by bumping the stamp) instead of hash sets. Each thread keeps one pair for
+// the solver it is running; a second solver alive on the same thread (the debugger keeps several)
+// gets a pair of its own.
 struct TargetSolver::Seen {
-    std::unordered_set<size_t> voxels;
-    std::unordered_set<uint32_t> sources;
+    struct Stamps {
+        std::vector<uint32_t> mark;
+        uint32_t now = 0;
+        bool in_use = false;
+        void start(size_t n) {
+            if (mark.size() != n) { mark.assign(n, 0); now = 0; }
+            if (++now == 0) { std::fill(mark.begin(), mark.end(), 0); now = 1; }
+        }
+        bool insert(size_t i) {  // true if i was not seen yet
+            if (mark[i] == now) return false;
+            mark[i] = now;
+            return true;
+        }
+    };
+    struct Pair { Stamps voxels, sources; };
+    static Pair& shared() { static thread_local Pair p; return p; }
+    Pair own;
+    Pair* use;
+    Seen(size_t nv, size_t ns) {
+        Pair& s = shared();
+        use = s.voxels.in_use ? &own : &s;
+        use->voxels.in_use = true;
+        use->voxels.start(nv);
+        use->sources.start(ns);
+    }
+    ~Seen() { use->voxels.in_use = false; }
+    Stamps& voxels() { return use->voxels; }
+    Stamps& sources() { return use->sources; }
 };
 
 TargetSolver::TargetSolver(const VoxelGrid& grid, int side, uint32_t target)
-    : grid_(grid), side_(side), target_(target), seen_(std::make_unique<Seen>()) {
+    : grid_(grid), side_(side), target_(target) {
     corners_ = grid_.mesh(side_).corners(target_);
     frame_ = TargetFrame::make(corners_);
     if (!frame_.degenerate) {
@@ -77,9 +106,12 @@ double TargetSolver::voxel_distance2(size_t v) const {
 }
 
 void TargetSolver::begin() {
+    // Started here, not in the constructor: several solvers may live on one thread (the debugger
+    // keeps one per target), but only the one being run uses the stamps at a time.
+    seen_ = std::make_unique<Seen>(grid_.num_voxels(), grid_.mesh(1 - side_).num_triangles());
     for (size_t v : grid_.voxels_of_triangle(side_, target_)) {
         target_voxels_.push_back(grid_.coords(v));
-        seen_->voxels.insert(v);
+        seen_->voxels().insert(v);
         queue_.push({0.0, v});
     }
     if (target_voxels_.empty()) {  // cannot happen for a triangle inside the grid; be safe
@@ -87,7 +119,7 @@ void TargetSolver::begin() {
         auto c = grid_.locate(corners_[0]);
         v = grid_.index(c[0], c[1], c[2]);
         target_voxels_.push_back(c);
-        seen_->voxels.insert(v);
+        seen_->voxels().insert(v);
         queue_.push({0.0, v});
     }
     if (watching()) {
@@ -137,7 +169,7 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
                     int i = c[0] + dx, j = c[1] + dy, k = c[2] + dz;
                     if (i < 0 || j < 0 || k < 0 || i >= grid_.nx || j >= grid_.ny || k >= grid_.nz) continue;
                     size_t v = grid_.index(i, j, k);
-                    if (!seen_->voxels.insert(v).second) continue;
+                    if (!seen_->voxels().insert(v)) continue;
                     double d2 = voxel_distance2(v);
                     queue_.push({d2, v});
                     if (watching()) voxel_log_.push_back({v, 1});
@@ -146,7 +178,7 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
         int other = 1 - side_;
         std::vector<std::pair<double, uint32_t>> found;
         for (const uint32_t* it = grid_.begin(other, top.voxel); it != grid_.end(other, top.voxel); ++it)
-            if (seen_->sources.insert(*it).second)
+            if (seen_->sources().insert(*it))
                 found.push_back({box_distance2(tbox, grid_.mesh(other).triangle_bounds(*it)), *it});
         std::sort(found.begin(), found.end(), [](auto& a, auto& b) { return a.first > b.first || (a.first == b.first && a.second > b.second); });
         for (auto& f : found) { pending_sources_.push_back(f.second); pending_dist_.push_back(f.first); }
