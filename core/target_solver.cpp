@@ -65,6 +65,9 @@ TargetSolver::TargetSolver(const VoxelGrid& grid, int side, uint32_t target)
     : grid_(grid), side_(side), target_(target) {
     corners_ = grid_.mesh(side_).corners(target_);
     frame_ = TargetFrame::make(corners_);
+    centroid_ = (corners_[0] + corners_[1] + corners_[2]) / 3.0;
+    for (const Vec3& c : corners_) reach_ = std::max(reach_, norm(c - centroid_));
+    reach_ = reach_ * (1 + 1e-12) + 1e-300;
     if (!frame_.degenerate) {
         const auto& o = frame_.ccw_order;
         mesh_ = std::make_unique<DomainMesh>(std::array<Vec2, 3>{frame_.corners[o[0]], frame_.corners[o[1]], frame_.corners[o[2]]});
@@ -140,6 +143,13 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
             double d2 = pending_dist_.back();
             pending_sources_.pop_back();
             pending_dist_.pop_back();
+            if (!beyond(d2) && max_sq_ < HUGE_VAL) {
+                // Tighter than the boxes: every point of T' is within `reach` of its centroid, so
+                // the source is at least |centroid - source| - reach away from all of T'.
+                auto sc = source_corners(s);
+                double dc = std::sqrt(closest_point_on_triangle(centroid_, sc[0], sc[1], sc[2]).dist2) - reach_;
+                if (dc > 0) d2 = std::max(d2, dc * dc);
+            }
             if (beyond(d2)) {
                 if (watching()) {
                     Event e = make_event(EventKind::SourceCulled);

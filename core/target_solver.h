@@ -127,6 +127,8 @@ private:
     int side_;
     uint32_t target_;
     std::array<Vec3, 3> corners_;
+    Vec3 centroid_;
+    double reach_ = 0;                // largest distance from the centroid to a point of T'
     TargetFrame frame_;
     std::unique_ptr<DomainMesh> mesh_;
     Phase phase_ = Phase::Begin;
