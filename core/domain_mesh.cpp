@@ -15,7 +15,7 @@
 namespace hlens {
 
 namespace {
-constexpr double kSnap = 1e-9;      // crossing points closer than this to a vertex become that vertex
+constexpr double kSnap = 1e-8;      // crossing points closer than this to a vertex become that vertex
 constexpr double kZero = 1e-12;
 // Crossing points this close along a curve are one point: where several curves meet (the shadow of
 // a vertex shared by many sources), nearly double roots are only accurate to about sqrt(epsilon).
