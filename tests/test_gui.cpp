@@ -499,4 +499,99 @@ TEST(Gui, TargetOutOfRangeShowsTheErrorPanelAndExitsTwo) {
     EXPECT_GT(count(im, 0, 0, im.w, im.h, [](auto p) { return near(p, kErrorBg, 2); }), 5000);
 }
 
+// --step N opens the timeline and the domain view of the target after event N of its
+// construction. hlens-cli trace measures A against B, so the B-to-A target is traced with the
+// meshes swapped (the same grid over the same two meshes: the same event stream).
+TEST(Gui, StepShowsTheTargetMidConstruction) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "step.png";
+    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "40"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ((long)num(o.out, "step"), 40);
+    EXPECT_EQ(raw_value(o.out, "step_finished"), "false");
+    const size_t at = o.out.find("\"step_state\"");
+    ASSERT_NE(at, std::string::npos) << o.out;
+    const long domains = (long)num(o.out, "domains", at), insertions = (long)num(o.out, "insertions", at);
+
+    // Independently: replay hlens-cli's event stream. The solver applies a whole insertion at once,
+    // so the state at event 40 is the state at the end of the insertion that event 40 belongs to:
+    // one domain (T') plus what every split added, minus every merge, over those insertions.
+    Outcome t = run({kCli, "trace", kDemoB, kDemoA, "--target", "22", "--json"}, dir);
+    ASSERT_EQ(t.code, 0) << t.err;
+    std::vector<std::string> lines;
+    std::istringstream in(t.out);
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    ASSERT_GT(lines.size(), 41u);
+    const long k = (long)num(lines[40], "insertion");
+    long created = 0, expect = 1;
+    for (size_t i = 0; i < lines.size(); ++i) {
+        const std::string& l = lines[i];
+        if (l.find("\"event\": \"final\"") != std::string::npos || (long)num(l, "insertion") > k) continue;
+        if (i <= 40 && (l.find("\"domain_created\"") != std::string::npos || l.find("\"domain_split\"") != std::string::npos))
+            ++created;
+        if (l.find("\"domain_split\"") != std::string::npos) expect += (long)int_list(l, "faces").size() - 1;
+        if (l.find("\"domain_merged\"") != std::string::npos) --expect;
+    }
+    EXPECT_GT(created, 0);
+    EXPECT_EQ(insertions, k);
+    EXPECT_EQ(domains, expect);
+    EXPECT_GT(domains, 1);
+
+    // The domain view shows the domains in distinct colours.
+    std::vector<int> r = int_list(o.out, "domain_view");
+    ASSERT_EQ(r.size(), 4u);
+    Image im = load_png(png);
+    ASSERT_EQ(im.w, 800);
+    EXPECT_GT(r[2], 100);
+    EXPECT_GT(r[3], 100);
+    std::vector<int> colours;
+    for (int y = r[1]; y < std::min(im.h, r[1] + r[3]); y += 2)
+        for (int x = r[0]; x < std::min(im.w, r[0] + r[2]); x += 2) {
+            auto p = im.at(x, y);
+            colours.push_back((p[0] / 8) << 10 | (p[1] / 8) << 5 | (p[2] / 8));
+        }
+    std::sort(colours.begin(), colours.end());
+    // Colours covering at least 100 sampled pixels: the background plus the domains' fills.
+    int big = 0;
+    for (size_t i = 0; i < colours.size();) {
+        size_t j = i;
+        while (j < colours.size() && colours[j] == colours[i]) ++j;
+        big += j - i >= 100;
+        i = j;
+    }
+    EXPECT_GE(big, 5) << "too few distinct fills in the domain view";
+
+    // --step end: the finished target, the same state as the trace summary.
+    fs::path png2 = dir / "end.png";
+    Outcome e = run_gui({"--direction", "ba", "--target", "22", "--step", "end"}, png2, dir);
+    ASSERT_EQ(e.code, 0) << e.err;
+    EXPECT_EQ(raw_value(e.out, "step_finished"), "true");
+    const size_t at2 = e.out.find("\"step_state\"");
+    ASSERT_NE(at2, std::string::npos);
+    EXPECT_EQ(num(e.out, "domains", at2), num(e.out, "domains"));
+    EXPECT_EQ(num(e.out, "arcs", at2), num(e.out, "arcs"));
+    EXPECT_EQ(num(e.out, "insertions", at2), num(e.out, "insertions"));
+    EXPECT_EQ((long)num(e.out, "step") + 1, (long)num(lines.back(), "step"));
+}
+
+// Right steps one event forward, Left one back (a replay from the start).
+TEST(Gui, ArrowKeysStepTheTimeline) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "keys.png";
+    Outcome f = run_gui({"--direction", "ba", "--target", "22", "--step", "40", "--key", "right", "--key", "right"}, png, dir);
+    ASSERT_EQ(f.code, 0) << f.err;
+    EXPECT_EQ((long)num(f.out, "step"), 42);
+    Outcome b = run_gui({"--direction", "ba", "--target", "22", "--step", "40", "--key", "left"}, png, dir);
+    ASSERT_EQ(b.code, 0) << b.err;
+    EXPECT_EQ((long)num(b.out, "step"), 39);
+    EXPECT_EQ(raw_value(b.out, "step_event"), "\"domain_merged\"");
+}
+
+TEST(Gui, StepNeedsTarget) {
+    fs::path dir = scratch_dir();
+    Outcome o = run({kGui, "--step", "3", "--screenshot", (dir / "x.png").string()}, dir);
+    EXPECT_EQ(o.code, 2);
+    EXPECT_NE(o.err.find("--step needs --target"), std::string::npos) << o.err;
+}
+
 #endif  // HLENS_GUI

@@ -8,6 +8,7 @@
 
 #include "compute.h"
 #include "scene.h"
+#include "stepper.h"
 
 namespace hlens::gui {
 
@@ -42,6 +43,7 @@ struct AppState {
     std::string name[2] = {"A", "B"};   // file names for the UI
     bool demo = false;
     bool headless = false;
+    bool scripted_input = false;  // headless with --click/--drag/...: hover tooltips are wanted
 
     std::shared_ptr<const LoadedScene> scene;   // set as soon as the meshes are loaded
     bool computed = false, cancelled = false;
@@ -71,6 +73,8 @@ struct AppState {
     double progress = -1;
     std::string phase;
     double elapsed = 0;
+
+    Stepper stepper;              // the timeline and the domain view of the selected target
 
     ViewRect view;
     float sidebar_width = 0;

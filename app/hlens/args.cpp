@@ -1,5 +1,6 @@
 #include "args.h"
 
+#include <climits>
 #include <cstdlib>
 
 #include "gl.h"
@@ -8,17 +9,20 @@ namespace hlens::gui {
 
 const char* usage_text() {
     return "usage: hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]\n"
+           "             [--step N|end]\n"
            "\n"
            "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
            "(assets/demo_a.obj, assets/demo_b.obj).\n"
            "\n"
            "  --target I          select triangle I of the measured mesh as the target T'\n"
            "  --direction ab|ba   measure A against B (targets in A, default) or B against A\n"
+           "  --step N|end        open the timeline and the domain view of the target (needs --target)\n"
+           "                      after event N of its construction (end: finished)\n"
            "  --size WxH          window size in pixels (default 1280x800)\n"
            "  --screenshot PATH   headless: wait for the computation, render, write a PNG, print the\n"
            "                      state as one JSON line on stdout and exit (0; 2 on bad input)\n"
            "\n"
-           "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --key home|f12\n"
+           "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --key home|f12|left|right|space\n"
            "                      with --screenshot: input played in order once the computation\n"
            "                      is done (window pixels from the top-left)\n"
            "\n"
@@ -65,6 +69,9 @@ Options parse_args(const std::vector<std::string>& args) {
             o.help = true;
         } else if (a == "--target") {
             o.target = parse_long(value(), "--target");
+        } else if (a == "--step") {
+            const std::string& v = value();
+            o.step = v == "end" ? LONG_MAX : parse_long(v, "--step");
         } else if (a == "--direction") {
             const std::string& v = value();
             if (v == "ab") o.direction = 0;
@@ -91,7 +98,10 @@ Options parse_args(const std::vector<std::string>& args) {
             k.kind = InputAction::Key;
             if (v == "home") k.key = GLFW_KEY_HOME;
             else if (v == "f12") k.key = GLFW_KEY_F12;
-            else throw UsageError("--key expects home or f12, got '" + v + "'");
+            else if (v == "left") k.key = GLFW_KEY_LEFT;
+            else if (v == "right") k.key = GLFW_KEY_RIGHT;
+            else if (v == "space") k.key = GLFW_KEY_SPACE;
+            else throw UsageError("--key expects home, f12, left, right or space, got '" + v + "'");
             o.input.push_back(k);
         } else if (a == "--drag") {
             auto v = parse_floats(value(), 4, a);
@@ -103,6 +113,7 @@ Options parse_args(const std::vector<std::string>& args) {
         }
     }
     if (!o.input.empty() && o.screenshot.empty()) throw UsageError("--click, --double-click, --drag and --key need --screenshot");
+    if (o.step >= 0 && o.target < 0) throw UsageError("--step needs --target");
     if (positional.empty()) {
         o.demo = true;
     } else if (positional.size() == 2) {

@@ -1,5 +1,6 @@
 // Command line of hlens:  hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]
-//                         [--click X,Y] [--double-click X,Y] [--drag X0,Y0,X1,Y1] [--key home|f12]
+//                         [--step N|end]
+//                         [--click X,Y] [--double-click X,Y] [--drag X0,Y0,X1,Y1] [--key home|f12|left|right|space]
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,7 @@ struct Options {
     bool size_given = false;
     std::string screenshot;      // --screenshot PATH: headless run, write a PNG and exit
     std::vector<InputAction> input;   // --click, --double-click, --drag, --key (in the given order)
+    long step = -1;              // --step N|end: open the timeline at event N (LONG_MAX: end; -1: not given)
     bool help = false;
 };
 

@@ -119,6 +119,24 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
          ", \"distance\": " + json_number(cam.distance) + "}";
     j += ", \"size\": [" + std::to_string(fb_w) + ", " + std::to_string(fb_h) + "]";
     j += ", \"viewport\": [" + std::to_string(vx) + ", 0, " + std::to_string(vw) + ", " + std::to_string(fb_h) + "]";
+    const Stepper& st = s.stepper;
+    if (st.open && st.active()) {   // the timeline's state: "step" is the current event (-1: none yet)
+        const TargetSolver& ts = *st.solver;
+        j += ", \"step\": " + std::to_string(st.step);
+        j += ", \"step_finished\": " + std::string(st.at_end ? "true" : "false");
+        j += ", \"step_event\": " + (st.current ? "\"" + std::string(event_name(st.current->kind)) + "\"" : std::string("null"));
+        j += ", \"step_state\": {\"insertions\": " + std::to_string(ts.insertions()) +
+             ", \"domains\": " + std::to_string(st.live_domains) + ", \"arcs\": " + std::to_string(st.live_arcs) +
+             ", \"vertices\": " + std::to_string(st.live_vertices) +
+             ", \"max\": " + json_number(std::sqrt(ts.max_sq())) + "}";
+        const float fx = fb_w / std::max(1.0f, s.view.x + s.view.w), fy = 1.0f;   // window -> framebuffer
+        (void)fy;
+        j += ", \"domain_view\": [" + std::to_string((int)std::lround(st.view_rect[0] * fx)) + ", " +
+             std::to_string((int)std::lround(st.view_rect[1] * fx)) + ", " + std::to_string((int)std::lround(st.view_rect[2] * fx)) +
+             ", " + std::to_string((int)std::lround(st.view_rect[3] * fx)) + "]";
+    } else {
+        j += ", \"step\": null";
+    }
     j += "}";
     return j;
 }
@@ -189,6 +207,7 @@ int main(int argc, char** argv) {
     AppState s;
     s.headless = !opt.screenshot.empty();
     s.demo = opt.demo;
+    s.scripted_input = !opt.input.empty();
     for (int side = 0; side < 2; ++side) {
         s.demo_path[side] = std::string(HLENS_ASSET_DIR) + (side == 0 ? "/demo_a.obj" : "/demo_b.obj");
         s.path[side] = s.edit_path[side] = opt.demo ? s.demo_path[side] : opt.path[side];
@@ -267,6 +286,7 @@ int main(int argc, char** argv) {
     const std::vector<MouseFrame> script = script_frames(opt.input);
     size_t script_pos = 0;
     int settle = 0, redraw = 3, exit_code = -1;
+    bool step_applied = false;
 
     while (!glfwWindowShouldClose(window)) {
         // ---- 1. Events (interactive and idle: sleep until something happens)
@@ -345,6 +365,13 @@ int main(int argc, char** argv) {
                 !(trace.running() && trace.side() == d && trace.target() == t))
                 trace.start(s.scene, d, (uint32_t)t);
         }
+        if (opt.step != -1 && s.selected[s.direction] == opt.target && !s.stepper.open && s.stepper.pending == -2 &&
+            !step_applied) {   // --step: open the timeline there, once
+            step_applied = true;
+            s.stepper.open = true;
+            s.stepper.pending = opt.step;
+        }
+        sync_stepper(s);
         s.computing = compute.running();
         s.progress = compute.progress();
         s.phase = compute.phase();
@@ -384,7 +411,7 @@ int main(int argc, char** argv) {
         bool input = io.MouseDelta.x != 0 || io.MouseDelta.y != 0 || io.MouseWheel != 0 || ImGui::IsAnyMouseDown() ||
                      io.InputQueueCharacters.Size > 0;
         for (bool k : io.KeysDown) input = input || k;
-        redraw = input ? 3 : std::max(0, redraw - 1);
+        redraw = input || s.stepper.playing ? 3 : std::max(0, redraw - 1);
 
         auto view_params = [&]() {
             ViewParams p;
@@ -493,7 +520,8 @@ int main(int argc, char** argv) {
             const int d = s.direction;
             const long t = s.selected[d];
             const bool errored = !s.errors.empty();
-            const bool traced = t < 0 || (s.trace[d] && s.trace[d]->target == (uint32_t)t);
+            const bool traced = (t < 0 || (s.trace[d] && s.trace[d]->target == (uint32_t)t)) &&
+                                (opt.step == -1 || step_applied || errored);
             const bool ready = compute_done && !compute.running() &&
                                (errored || (target_applied && script_pos >= script.size() && traced && !trace.running()));
             if (!ready) settle = 0;

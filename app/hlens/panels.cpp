@@ -260,6 +260,8 @@ void target_contents(AppState& s) {
         }
         ImGui::EndTable();
     }
+    if (ImGui::Button(s.stepper.open ? "Close timeline & domain view" : "Step through (timeline & domain view)", ImVec2(-1, 0)))
+        s.stepper.open = !s.stepper.open;
     ImGui::TextUnformatted("Trace (TargetSolver)");
     if (s.trace_running && (!s.trace[d] || s.trace[d]->target != (uint32_t)t)) {
         ImGui::SameLine();
@@ -444,6 +446,8 @@ void draw_panels(AppState& s) {
     }
     ImGui::End();
     target_window(s);
+    draw_domain_view(s);
+    draw_timeline(s);
     error_panel(s);
     drop_popup(s);
 }

@@ -1,0 +1,89 @@
+// Stepping through one target's construction: a TargetSolver recording its events, driven from
+// the timeline panel, and the drawing data of its domain mesh for the 2D domain view.
+//
+// The solver runs on the UI thread: one event (or one insertion) per request is cheap, and
+// stepping back replays from the start (TargetSolver::replay_to, the construction is
+// deterministic). After every change rebuild() turns the domain mesh into polygons in the
+// target's frame; the domain view only transforms and draws them.
+#pragma once
+#include <climits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compute.h"
+#include "target_solver.h"
+
+namespace hlens::gui {
+
+struct DomainDraw {
+    int face = -1;
+    DomainLabel label;
+    bool infinite = false;
+    unsigned colour = 0;              // ImU32
+    double area = 0;
+    std::vector<Vec2> outer;          // the outer loop, sampled (frame coordinates)
+    std::vector<int> tris;            // triangles of `outer` (indices, three per triangle)
+};
+
+struct ArcDraw {
+    int edge = -1;
+    ArcKind kind = ArcKind::Conic;
+    std::vector<Vec2> pts;            // the arc sampled between z0 and z1
+};
+
+struct Stepper {
+    // What is being stepped.
+    std::shared_ptr<const LoadedScene> scene;
+    int side = -1;
+    long target = -1;
+    std::unique_ptr<TargetSolver> solver;
+    long step = -1;                   // the current event (-1: before the first)
+    bool at_end = false;              // no event is left
+    std::optional<Event> current;
+
+    // Requests and UI state.
+    bool open = false;                // timeline and domain view shown
+    long pending = -2;                // a jump asked for before the solver existed (LONG_MAX: the end)
+    bool playing = false;
+    float speed = 10;                 // events per second while playing
+    double play_accum = 0;
+    int jump_input = 0;
+    bool show_regions = true;
+    bool fit = true;                  // reset pan and zoom on the next frame
+    float zoom = 1;
+    float pan_x = 0, pan_y = 0;       // frame units
+
+    // Drawing data of the current state.
+    std::vector<DomainDraw> domains;  // in order of decreasing area
+    std::vector<ArcDraw> arcs;
+    std::vector<Vec2> vertices;
+    int live_domains = 0, live_arcs = 0, live_vertices = 0;
+
+    // The domain view's canvas on screen, for the headless JSON line.
+    float view_rect[4] = {0, 0, 0, 0};
+
+    void reset(std::shared_ptr<const LoadedScene> sc, int sd, long t);
+    void clear();
+    bool active() const { return solver != nullptr; }
+    // Navigation; each rebuilds the drawing data.
+    void forward();                   // one event
+    void back();                      // one event (replay)
+    void next_insertion();            // to the last event of the next insertion
+    void to_end();
+    void jump(long n);                // to just after event n (LONG_MAX: the end)
+    void rebuild();
+    // The last RegionsProjected event at or before the current step, if any.
+    const Event* regions_event() const;
+};
+
+// Keeps the stepper on the selected target of the current direction (reset when it changes).
+struct AppState;
+void sync_stepper(AppState& s);
+
+// The timeline panel and the 2D domain view (only while s.stepper.open and a target is selected).
+void draw_timeline(AppState& s);
+void draw_domain_view(AppState& s);
+
+}  // namespace hlens::gui
