@@ -595,3 +595,103 @@ TEST(Gui, StepNeedsTarget) {
 }
 
 #endif  // HLENS_GUI
+
+// --event-log opens the event log with the timeline: every event of the target's construction
+// (as many as hlens-cli trace prints, less its final summary line), all shown with no filter.
+TEST(Gui, EventLogListsEveryEventOfTheTarget) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "event_log.png";
+    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--event-log"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ((long)num(o.out, "step"), 100);
+    const size_t at = o.out.find("\"event_log\"");
+    ASSERT_NE(at, std::string::npos) << o.out;
+    const long shown = (long)num(o.out, "shown", at), total = (long)num(o.out, "total", at);
+    Outcome t = run({kCli, "trace", kDemoB, kDemoA, "--target", "22", "--json"}, dir);
+    ASSERT_EQ(t.code, 0) << t.err;
+    long lines = 0;
+    std::istringstream in(t.out);
+    for (std::string l; std::getline(in, l);) lines += !l.empty();
+    EXPECT_EQ(total, lines - 1);
+    EXPECT_EQ(shown, total);
+    EXPECT_GT(total, 100);
+}
+
+// --case NAME loads a built-in degenerate configuration. shared_edge: A = T0 (the unit right
+// triangle in z = 0), B = (1,0,0),(0,1,0),(0,0,1). d(., B) is convex, so h(A,B) is at a vertex
+// of A: the origin projects to B's centroid at 1/sqrt3; (1,0,0) and (0,1,0) are B's corners.
+// With --epsilon E, B moves by E along its normal: 1/sqrt3 + E.
+TEST(Gui, BuiltinCaseHasItsHandValue) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "case.png";
+    Outcome o = run_gui({"--case", "shared_edge", "--target", "0"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_NEAR(num(o.out, "a_to_b"), 1 / std::sqrt(3.0), 1e-12) << o.out;
+    EXPECT_EQ((long)num(o.out, "target"), 0);
+    Outcome e = run_gui({"--case", "shared_edge", "--epsilon", "1e-3", "--target", "0"}, png, dir);
+    ASSERT_EQ(e.code, 0) << e.err;
+    EXPECT_NEAR(num(e.out, "a_to_b"), 1 / std::sqrt(3.0) + 1e-3, 1e-12) << e.out;
+    // Other hand values: perpendicular (B in y = 0.25 crossing A): 0.75; target_in_source_plane: 2.
+    Outcome p = run_gui({"--case", "perpendicular", "--target", "0"}, png, dir);
+    ASSERT_EQ(p.code, 0) << p.err;
+    EXPECT_NEAR(num(p.out, "a_to_b"), 0.75, 1e-12);
+    Outcome q = run_gui({"--case", "target_in_source_plane", "--target", "0"}, png, dir);
+    ASSERT_EQ(q.code, 0) << q.err;
+    EXPECT_NEAR(num(q.out, "a_to_b"), 2.0, 1e-12);
+    Outcome bad = run({kGui, "--case", "nonsense", "--screenshot", (dir / "x.png").string()}, dir);
+    EXPECT_EQ(bad.code, 2);
+}
+
+// --export-case DIR writes the selected target and its relevant sources; the pair alone has the
+// same one-sided distance as the target's maximum in the whole meshes.
+TEST(Gui, ExportCaseReproducesTheTargetMaximum) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "export.png", out = dir / "exported";
+    fs::create_directories(out);
+    Outcome o = run_gui({"--target", "258", "--export-case", out.string()}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const double target_max = num(o.out, "target_max");
+    const fs::path t = out / "hlens-case-258-target.obj", s = out / "hlens-case-258-sources.obj";
+    ASSERT_TRUE(fs::exists(t));
+    ASSERT_TRUE(fs::exists(s));
+    Outcome c = run({kCli, "distance", t.string(), s.string(), "--one-sided", "--json"}, dir);
+    ASSERT_EQ(c.code, 0) << c.err;
+    const size_t ab = c.out.find("\"a_to_b\": {");
+    ASSERT_NE(ab, std::string::npos) << c.out;
+    EXPECT_EQ(num(c.out, "distance", ab), target_max);
+    // An unwritable directory is an error (exit 2).
+    Outcome bad = run_gui({"--target", "258", "--export-case", (dir / "no" / "such" / "dir").string()}, png, dir);
+    EXPECT_EQ(bad.code, 2);
+}
+
+// A click on a line of the event log jumps the timeline to that step (here back from 100 to 97,
+// a replay), and the arrow keys still step from there.
+TEST(Gui, EventLogClickJumpsToTheStep) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "event_log_click.png";
+    // At 800x600 the log centres step 100 at y = 399; rows are 17 pixels apart.
+    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--event-log", "--click", "500,348"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ((long)num(o.out, "step"), 97);
+    Outcome k = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--event-log", "--click", "500,348", "--key",
+                         "right", "--key", "right"},
+                        png, dir);
+    ASSERT_EQ(k.code, 0) << k.err;
+    EXPECT_EQ((long)num(k.out, "step"), 99);
+}
+
+// The 3D view highlights the sources inserted up to the current step, and the timeline plots the
+// search radius after each insertion: as many sources and points as insertions so far.
+TEST(Gui, SearchRadiusFollowsTheInsertions) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "radius.png";
+    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "1500"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t at = o.out.find("\"step_state\"");
+    ASSERT_NE(at, std::string::npos) << o.out;
+    const long ins = (long)num(o.out, "insertions", at);
+    EXPECT_GT(ins, 10);
+    EXPECT_EQ((long)num(o.out, "highlighted", at), ins);
+    EXPECT_EQ((long)num(o.out, "radius_plot", at), ins);
+    EXPECT_EQ(num(o.out, "search_radius", at), num(o.out, "max", at));
+}

@@ -29,6 +29,9 @@ struct Requests {
     int set_direction = -1;
     long select = -2;             // -2: nothing; -1: clear the selection; >= 0: select that target
     bool load = false;            // open load_path[0], load_path[1] as A and B
+    std::string load_case;        // non-empty: load that built-in case (with case_eps)
+    double case_eps = 0;
+    bool export_case = false;     // export the selected target into export_dir
     std::string load_path[2];
 };
 
@@ -64,6 +67,18 @@ struct AppState {
     std::string edit_path[2];     // the file panel's text fields
     std::vector<std::string> recent;    // recently opened files, newest first (not kept in headless runs)
     std::vector<std::string> dropped;   // files dropped on the window, waiting for "which side?"
+
+    // Built-in cases (cases.h) and "Export case".
+    bool case_loaded = false;     // A and B are case_mesh, not files
+    std::string case_name;
+    double case_eps = 0;
+    TriangleMesh case_mesh[2];
+    int case_choice = 0;
+    bool case_near = false;
+    float case_log_eps = -6;      // log10 of epsilon for the menu's slider
+    std::string export_dir = ".";
+    std::string export_status;    // the paths written, or the error
+    bool export_ok = false;
 
     std::vector<AppError> errors;
     std::string status;           // last status message (e.g. "saved hlens-....png")

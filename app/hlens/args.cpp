@@ -9,7 +9,7 @@ namespace hlens::gui {
 
 const char* usage_text() {
     return "usage: hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]\n"
-           "             [--step N|end]\n"
+           "             [--step N|end] [--event-log] [--case NAME [--epsilon E]] [--export-case DIR]\n"
            "\n"
            "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
            "(assets/demo_a.obj, assets/demo_b.obj).\n"
@@ -18,6 +18,12 @@ const char* usage_text() {
            "  --direction ab|ba   measure A against B (targets in A, default) or B against A\n"
            "  --step N|end        open the timeline and the domain view of the target (needs --target)\n"
            "                      after event N of its construction (end: finished)\n"
+           "  --event-log         with --step: also open the event log (every event, filterable)\n"
+           "  --case NAME         load a built-in degenerate case instead of files (parallel,\n"
+           "                      coplanar_overlap, shared_edge, shared_vertex, perpendicular, sliver,\n"
+           "                      duplicated, target_in_source_plane); --epsilon E: near-degenerate\n"
+           "  --export-case DIR   with --screenshot and --target: write the target and its relevant\n"
+           "                      sources to DIR/hlens-case-<target>-target.obj and -sources.obj\n"
            "  --size WxH          window size in pixels (default 1280x800)\n"
            "  --screenshot PATH   headless: wait for the computation, render, write a PNG, print the\n"
            "                      state as one JSON line on stdout and exit (0; 2 on bad input)\n"
@@ -72,6 +78,19 @@ Options parse_args(const std::vector<std::string>& args) {
         } else if (a == "--step") {
             const std::string& v = value();
             o.step = v == "end" ? LONG_MAX : parse_long(v, "--step");
+        } else if (a == "--case") {
+            o.case_name = value();
+        } else if (a == "--epsilon") {
+            const std::string& v = value();
+            char* end = nullptr;
+            o.epsilon = std::strtod(v.c_str(), &end);
+            if (v.empty() || !end || *end || !(o.epsilon >= 0) || o.epsilon > 1)
+                throw UsageError("--epsilon expects a number in [0, 1], got '" + v + "'");
+            o.epsilon_given = true;
+        } else if (a == "--export-case") {
+            o.export_dir = value();
+        } else if (a == "--event-log") {
+            o.event_log = true;
         } else if (a == "--direction") {
             const std::string& v = value();
             if (v == "ab") o.direction = 0;
@@ -114,6 +133,9 @@ Options parse_args(const std::vector<std::string>& args) {
     }
     if (!o.input.empty() && o.screenshot.empty()) throw UsageError("--click, --double-click, --drag and --key need --screenshot");
     if (o.step >= 0 && o.target < 0) throw UsageError("--step needs --target");
+    if (o.epsilon_given && o.case_name.empty()) throw UsageError("--epsilon needs --case");
+    if (!o.export_dir.empty() && (o.screenshot.empty() || o.target < 0)) throw UsageError("--export-case needs --screenshot and --target");
+    if (!o.case_name.empty() && !positional.empty()) throw UsageError("--case replaces the meshes A B");
     if (positional.empty()) {
         o.demo = true;
     } else if (positional.size() == 2) {

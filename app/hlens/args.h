@@ -1,5 +1,5 @@
 // Command line of hlens:  hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]
-//                         [--step N|end]
+//                         [--step N|end] [--event-log] [--case NAME [--epsilon E]] [--export-case DIR]
 //                         [--click X,Y] [--double-click X,Y] [--drag X0,Y0,X1,Y1] [--key home|f12|left|right|space]
 #pragma once
 #include <stdexcept>
@@ -30,6 +30,11 @@ struct Options {
     std::string screenshot;      // --screenshot PATH: headless run, write a PNG and exit
     std::vector<InputAction> input;   // --click, --double-click, --drag, --key (in the given order)
     long step = -1;              // --step N|end: open the timeline at event N (LONG_MAX: end; -1: not given)
+    bool event_log = false;
+    std::string case_name;       // --case NAME: a built-in case instead of files
+    double epsilon = 0;          // --epsilon E: its near-degeneracy
+    bool epsilon_given = false;
+    std::string export_dir;      // --export-case DIR: headless, export the selected target there      // --event-log: open the event log with the timeline
     bool help = false;
 };
 

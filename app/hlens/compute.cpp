@@ -58,12 +58,20 @@ LoadError to_load_error(int side, const std::string& path, const std::string& me
 }
 }  // namespace
 
-void ComputeJob::start(const std::string& path_a, const std::string& path_b) {
-    launch([this, path_a, path_b] {
+void ComputeJob::start(const TriangleMesh& a, const TriangleMesh& b) { start_impl("", "", std::make_shared<std::array<TriangleMesh, 2>>(std::array<TriangleMesh, 2>{a, b})); }
+
+void ComputeJob::start(const std::string& path_a, const std::string& path_b) { start_impl(path_a, path_b, nullptr); }
+
+void ComputeJob::start_impl(const std::string& path_a, const std::string& path_b, std::shared_ptr<std::array<TriangleMesh, 2>> given) {
+    launch([this, path_a, path_b, given] {
         ComputeOutput out;
         auto scene = std::make_shared<LoadedScene>();
         const std::string paths[2] = {path_a, path_b};
-        for (int side = 0; side < 2; ++side) {   // both files, so both errors are reported
+        if (given) {
+            scene->mesh[0] = (*given)[0];
+            scene->mesh[1] = (*given)[1];
+        }
+        for (int side = 0; side < 2 && !given; ++side) {   // both files, so both errors are reported
             set_phase(std::string("Loading ") + (side == 0 ? "A" : "B") + ": " + paths[side]);
             try {
                 scene->mesh[side] = load_mesh(paths[side]);
@@ -132,6 +140,7 @@ void TraceJob::start(std::shared_ptr<const LoadedScene> scene, int side, uint32_
         auto t0 = std::chrono::steady_clock::now();
         try {
             auto ts = std::make_shared<TargetSolver>(*scene->grid, side, target);
+            ts->record_events();   // the whole stream, for the event log
             while (!cancel_flag().load() && ts->step())
                 if (ts->insertions() % 16 == 0) set_phase("insertion " + std::to_string(ts->insertions()));
             s.cancelled = !ts->finished();

@@ -4,6 +4,7 @@
 // so the window stays responsive. Results are handed over once, by value or shared_ptr, under a
 // mutex; nothing else is shared with the worker except the cancel flag and the progress atomics.
 #pragma once
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <functional>
@@ -84,12 +85,15 @@ class ComputeJob : public Worker {
 public:
     ~ComputeJob() override { stop(); }
     void start(const std::string& path_a, const std::string& path_b);
+    // The same with meshes made in memory (the built-in cases): no loading.
+    void start(const TriangleMesh& a, const TriangleMesh& b);
     // The meshes and grid, once, as soon as they are ready (before the distances are).
     std::shared_ptr<const LoadedScene> take_scene();
     // The outcome, once, when the job has ended.
     std::optional<ComputeOutput> take_result();
 
 private:
+    void start_impl(const std::string& path_a, const std::string& path_b, std::shared_ptr<std::array<TriangleMesh, 2>> given);
     std::shared_ptr<const LoadedScene> scene_;
     std::optional<ComputeOutput> result_;
 };

@@ -31,6 +31,8 @@
 #include "app_state.h"
 #include "args.h"
 #include "camera.h"
+#include "case_export.h"
+#include "cases.h"
 #include "compute.h"
 #include "gl.h"
 #include "panels.h"
@@ -119,6 +121,8 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
          ", \"distance\": " + json_number(cam.distance) + "}";
     j += ", \"size\": [" + std::to_string(fb_w) + ", " + std::to_string(fb_h) + "]";
     j += ", \"viewport\": [" + std::to_string(vx) + ", 0, " + std::to_string(vw) + ", " + std::to_string(fb_h) + "]";
+    if (s.case_loaded) j += ", \"case\": \"" + s.case_name + "\", \"epsilon\": " + json_number(s.case_eps);
+    if (s.export_ok) j += ", \"exported\": true";
     const Stepper& st = s.stepper;
     if (st.open && st.active()) {   // the timeline's state: "step" is the current event (-1: none yet)
         const TargetSolver& ts = *st.solver;
@@ -128,12 +132,17 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
         j += ", \"step_state\": {\"insertions\": " + std::to_string(ts.insertions()) +
              ", \"domains\": " + std::to_string(st.live_domains) + ", \"arcs\": " + std::to_string(st.live_arcs) +
              ", \"vertices\": " + std::to_string(st.live_vertices) +
-             ", \"max\": " + json_number(std::sqrt(ts.max_sq())) + "}";
+             ", \"max\": " + json_number(std::sqrt(ts.max_sq())) +
+             ", \"search_radius\": " + json_number(ts.search_radius()) +
+             ", \"highlighted\": " + std::to_string(ts.inserted_sources().size()) +
+             ", \"radius_plot\": " + std::to_string(st.radius_plot.size()) + "}";
         const float fx = fb_w / std::max(1.0f, s.view.x + s.view.w), fy = 1.0f;   // window -> framebuffer
         (void)fy;
         j += ", \"domain_view\": [" + std::to_string((int)std::lround(st.view_rect[0] * fx)) + ", " +
              std::to_string((int)std::lround(st.view_rect[1] * fx)) + ", " + std::to_string((int)std::lround(st.view_rect[2] * fx)) +
              ", " + std::to_string((int)std::lround(st.view_rect[3] * fx)) + "]";
+        if (st.event_log)
+            j += ", \"event_log\": {\"shown\": " + std::to_string(st.log_shown) + ", \"total\": " + std::to_string(st.log_total) + "}";
     } else {
         j += ", \"step\": null";
     }
@@ -189,6 +198,51 @@ void set_direction(AppState& s, int d) {
     }
 }
 
+// Replaces A and B by a built-in case (the caller recomputes). False: unknown name.
+bool load_builtin_case(AppState& s, const std::string& name, double eps) {
+    TriangleMesh a, b;
+    double hand = 0;
+    if (!make_case(name, eps, a, b, hand)) return false;
+    s.case_loaded = true;
+    s.case_name = name;
+    s.case_eps = eps;
+    s.case_mesh[0] = std::move(a);
+    s.case_mesh[1] = std::move(b);
+    for (int side = 0; side < 2; ++side) {
+        s.path[side] = s.edit_path[side] = "";
+        s.name[side] = "case " + name + (side == 0 ? " A" : " B");
+    }
+    s.demo = false;
+    s.errors.clear();
+    s.selected[0] = s.selected[1] = -1;
+    s.trace[0].reset();
+    s.trace[1].reset();
+    s.scene.reset();
+    return true;
+}
+
+// "Export case": the selected target and its relevant sources as two OBJ files in s.export_dir.
+bool export_selected(AppState& s) {
+    const int d = s.direction;
+    const long t = s.selected[d];
+    s.export_ok = false;
+    if (t < 0 || !s.scene || !s.scene->grid) {
+        s.export_status = "no target selected";
+        return false;
+    }
+    const fs::path dir = s.export_dir.empty() ? fs::path(".") : fs::path(s.export_dir);
+    const std::string base = "hlens-case-" + std::to_string(t);
+    const std::string tp = (dir / (base + "-target.obj")).string(), sp = (dir / (base + "-sources.obj")).string();
+    try {
+        export_case(*s.scene->grid, d, (uint32_t)t, tp, sp);
+        s.export_status = "wrote " + tp + "\nand " + sp;
+        s.export_ok = true;
+    } catch (const std::exception& e) {
+        s.export_status = std::string("export failed: ") + e.what();
+    }
+    return s.export_ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -218,6 +272,12 @@ int main(int argc, char** argv) {
     s.style[0].color[0] = 0.86f, s.style[0].color[1] = 0.62f, s.style[0].color[2] = 0.42f;
     s.style[1].color[0] = 0.55f, s.style[1].color[1] = 0.66f, s.style[1].color[2] = 0.88f;
     set_direction(s, opt.direction);
+    s.stepper.event_log = opt.event_log;
+    if (!opt.case_name.empty() && !load_builtin_case(s, opt.case_name, opt.epsilon)) {
+        std::fprintf(stderr, "hlens: unknown case '%s'\n%s", opt.case_name.c_str(), usage_text());
+        return 2;
+    }
+    if (!opt.export_dir.empty()) s.export_dir = opt.export_dir;
 
     // ---- 1. Window and OpenGL 3.3 core context
     glfwSetErrorCallback(glfw_error);
@@ -279,7 +339,13 @@ int main(int argc, char** argv) {
     Camera camera;
     ComputeJob compute;
     TraceJob trace;
-    compute.start(s.path[0], s.path[1]);
+    auto start_compute = [&]() {
+        if (s.case_loaded)
+            compute.start(s.case_mesh[0], s.case_mesh[1]);
+        else
+            compute.start(s.path[0], s.path[1]);
+    };
+    start_compute();
     bool need_home = false, target_applied = opt.target < 0, compute_done = false;
     bool press_in_view[3] = {false, false, false};
     bool press_was_double = false;   // the press of a double-click: its release does not pick
@@ -318,7 +384,7 @@ int main(int argc, char** argv) {
             if (!out->errors.empty()) {
                 s.scene.reset();
                 scene.clear();
-            } else if (!s.headless && !s.demo) {
+            } else if (!s.headless && !s.demo && !s.case_loaded) {
                 remember(s.recent, s.path[1], "");
                 remember(s.recent, s.path[0], recent_file);
             }
@@ -483,6 +549,7 @@ int main(int argc, char** argv) {
                 s.name[side] = fs::path(s.path[side]).filename().string();
             }
             s.demo = s.path[0] == s.demo_path[0] && s.path[1] == s.demo_path[1];
+            s.case_loaded = false;
             s.errors.clear();
             s.selected[0] = s.selected[1] = -1;
             s.trace[0].reset();
@@ -491,11 +558,18 @@ int main(int argc, char** argv) {
             scene.clear();
             req.recompute = true;
         }
+        if (!req.load_case.empty() && load_builtin_case(s, req.load_case, req.case_eps)) {
+            scene.clear();
+            set_direction(s, 0);
+            s.selected[0] = 0;   // target 0 of A
+            req.recompute = true;
+        }
+        if (req.export_case) export_selected(s);
         if (req.recompute) {
             s.computed = s.cancelled = false;
             s.range[0].valid = s.range[1].valid = false;
             compute_done = false;
-            compute.start(s.path[0], s.path[1]);
+            start_compute();
         }
         if (req.home && scene.loaded()) camera.frame(scene.box_lo(), scene.box_hi(), aspect);
         if (req.clear_errors) s.errors.clear();
@@ -526,6 +600,11 @@ int main(int argc, char** argv) {
                                (errored || (target_applied && script_pos >= script.size() && traced && !trace.running()));
             if (!ready) settle = 0;
             if (ready && ++settle > 4) {   // a few frames for ImGui windows to size themselves
+                if (!opt.export_dir.empty() && !errored && !export_selected(s)) {
+                    std::fprintf(stderr, "hlens: %s\n", s.export_status.c_str());
+                    exit_code = 2;
+                    break;
+                }
                 if (!save_framebuffer_png(opt.screenshot, fb_w, fb_h)) {
                     std::fprintf(stderr, "hlens: %s: cannot write the PNG\n", opt.screenshot.c_str());
                     exit_code = 1;

@@ -8,6 +8,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "cases.h"
 #include "colormap.h"
 
 namespace hlens::gui {
@@ -367,6 +368,40 @@ void drop_popup(AppState& s) {
     ImGui::EndPopup();
 }
 
+void cases_section(AppState& s) {
+    if (!ImGui::CollapsingHeader("Cases")) return;
+    const auto& cases = builtin_cases();
+    s.case_choice = std::clamp(s.case_choice, 0, (int)cases.size() - 1);
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::BeginCombo("##case", cases[s.case_choice].name)) {
+        for (int i = 0; i < (int)cases.size(); ++i) {
+            if (ImGui::Selectable(cases[i].name, i == s.case_choice)) s.case_choice = i;
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", cases[i].description);
+        }
+        ImGui::EndCombo();
+    }
+    ImGui::TextWrapped("%s", cases[s.case_choice].description);
+    ImGui::Checkbox("near-degenerate", &s.case_near);
+    if (s.case_near) {
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(-1);
+        ImGui::SliderFloat("##eps", &s.case_log_eps, -12, -1, "eps 1e%.1f");
+    }
+    if (ImGui::Button("Load case", ImVec2(-1, 0))) {
+        s.req.load_case = cases[s.case_choice].name;
+        s.req.case_eps = s.case_near ? std::pow(10.0, (double)s.case_log_eps) : 0.0;
+    }
+    ImGui::Separator();
+    ImGui::TextUnformatted("Export case (selected target)");
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputText("##exportdir", &s.export_dir);
+    ImGui::BeginDisabled(s.selected[s.direction] < 0 || !s.scene || !s.scene->grid);
+    if (ImGui::Button("Export case", ImVec2(-1, 0))) s.req.export_case = true;
+    ImGui::EndDisabled();
+    if (!s.export_status.empty())
+        ImGui::TextColored(s.export_ok ? ImVec4(0.6f, 1, 0.6f, 1) : ImVec4(1, 0.5f, 0.5f, 1), "%s", s.export_status.c_str());
+}
+
 void help_section() {
     if (!ImGui::CollapsingHeader("Help")) return;
     ImGui::BulletText("left-drag: orbit");
@@ -439,6 +474,7 @@ void draw_panels(AppState& s) {
     colormap_section(s);
     meshes_section(s);
     open_section(s);
+    cases_section(s);
     help_section();
     if (!s.status.empty()) {
         ImGui::Separator();
@@ -448,6 +484,7 @@ void draw_panels(AppState& s) {
     target_window(s);
     draw_domain_view(s);
     draw_timeline(s);
+    draw_event_log(s);
     error_panel(s);
     drop_popup(s);
 }
@@ -472,6 +509,23 @@ void draw_view_overlay(const AppState& s, const Scene& scene, const glm::mat4& m
                 project(mvp, v, scene.local(s.trace[d]->max_point), m)) {
                 dl->AddLine(ImVec2(m.x - r, m.y - r), ImVec2(m.x + r, m.y + r), IM_COL32(255, 255, 255, 255), 2);
                 dl->AddLine(ImVec2(m.x - r, m.y + r), ImVec2(m.x + r, m.y - r), IM_COL32(255, 255, 255, 255), 2);
+            }
+        }
+        // The timeline's target: the sources inserted so far, over the other mesh (the latest brighter).
+        const Stepper& st = s.stepper;
+        if (st.open && st.active() && st.scene == s.scene && st.side == d && st.target == t) {
+            const auto& ins = st.solver->inserted_sources();
+            const TriangleMesh& other = s.scene->mesh[1 - d];
+            for (size_t i = 0; i < ins.size(); ++i) {
+                if (ins[i] >= other.num_triangles()) continue;
+                auto c = other.corners(ins[i]);
+                ImVec2 q[3];
+                bool ok = true;
+                for (int k = 0; k < 3; ++k) ok = ok && project(mvp, v, scene.local(c[k]), q[k]);
+                if (!ok) continue;
+                const bool last = i + 1 == ins.size();
+                dl->AddTriangleFilled(q[0], q[1], q[2], last ? IM_COL32(255, 200, 40, 150) : IM_COL32(40, 220, 255, 90));
+                dl->AddPolyline(q, 3, last ? IM_COL32(255, 220, 80, 255) : IM_COL32(60, 230, 255, 220), ImDrawFlags_Closed, 1.5f);
             }
         }
         // Witnesses: from_point (filled) on the measured mesh, to_point (ring) on the other.

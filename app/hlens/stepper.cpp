@@ -1,6 +1,7 @@
 #include "stepper.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -161,6 +162,8 @@ std::string event_text(const Event& e) {
 }
 
 }  // namespace
+
+std::string event_summary(const Event& e) { return event_text(e); }
 
 // ---- Stepper
 
@@ -366,6 +369,8 @@ void draw_timeline(AppState& s) {
     ImGui::SameLine();
     ImGui::Checkbox("regions", &st.show_regions);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("outline the seven regions of the source being inserted");
+    ImGui::SameLine();
+    ImGui::Checkbox("event log", &st.event_log);
 
     // Keys: Left/Right step, Space plays, unless a text field (or another widget) has the keyboard.
     ImGuiIO& io = ImGui::GetIO();
@@ -410,6 +415,27 @@ void draw_timeline(AppState& s) {
                 st.live_domains, st.live_arcs, st.live_vertices,
                 std::isfinite(mx) ? std::to_string(std::sqrt(mx)).c_str() : "inf",
                 std::isfinite(r) ? std::to_string(r).c_str() : "inf");
+    // The search radius after each insertion up to the current step (right of the text, if it fits).
+    st.radius_plot.clear();
+    {
+        const auto& ev = ts.events();
+        for (long i = 0; i <= std::min<long>(st.step, (long)ev.size() - 1); ++i) {
+            const Event& e = ev[i];
+            if (e.insertion < 1 || !std::isfinite(e.radius)) continue;
+            if ((int)st.radius_plot.size() < e.insertion) st.radius_plot.resize(e.insertion, (float)e.radius);
+            st.radius_plot[e.insertion - 1] = (float)e.radius;
+        }
+    }
+    const float plot_w = 22 * em();
+    if (ImGui::GetWindowContentRegionMax().x > plot_w + 48 * em() && !st.radius_plot.empty()) {
+        const float lh = ImGui::GetTextLineHeightWithSpacing();
+        ImGui::SetCursorPos(ImVec2(ImGui::GetWindowContentRegionMax().x - plot_w, ImGui::GetCursorPosY() - 3 * lh));
+        char overlay[64];
+        std::snprintf(overlay, sizeof overlay, "search radius %.4g", st.radius_plot.back());
+        ImGui::PlotLines("##radius", st.radius_plot.data(), (int)st.radius_plot.size(), 0, overlay, 0.0f, FLT_MAX,
+                         ImVec2(plot_w, 3 * lh - ImGui::GetStyle().ItemSpacing.y));
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("search radius after each insertion, up to the current step");
+    }
     ImGui::End();
 }
 

@@ -61,6 +61,18 @@ struct Stepper {
     std::vector<Vec2> vertices;
     int live_domains = 0, live_arcs = 0, live_vertices = 0;
 
+    // Event log panel (with the timeline): every recorded event of the target, filtered by kind.
+    bool event_log = false;
+    bool kind_shown[16] = {true, true, true, true, true, true, true, true, true, true, true, true, true, true, true, true};
+    std::vector<long> log_rows;       // indices into the full event stream that pass the filter
+    const void* log_source = nullptr; // the stream log_rows was built from
+    size_t log_source_size = 0;
+    bool log_dirty = true;
+    long log_scrolled_step = -2;      // the step last scrolled into view
+    long log_shown = 0, log_total = 0;   // for the headless JSON line
+
+    std::vector<float> radius_plot;   // search radius after insertion 1, 2, ... up to the current step
+
     // The domain view's canvas on screen, for the headless JSON line.
     float view_rect[4] = {0, 0, 0, 0};
 
@@ -85,5 +97,9 @@ void sync_stepper(AppState& s);
 // The timeline panel and the 2D domain view (only while s.stepper.open and a target is selected).
 void draw_timeline(AppState& s);
 void draw_domain_view(AppState& s);
+// The event log of the selected target (only with the timeline and s.stepper.event_log).
+void draw_event_log(AppState& s);
+// One line with the event's main fields.
+std::string event_summary(const Event& e);
 
 }  // namespace hlens::gui
