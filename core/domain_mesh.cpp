@@ -16,11 +16,11 @@ namespace hlens {
 
 namespace {
 constexpr double kSnap = 1e-8;      // crossing points closer than this to a vertex become that vertex
-constexpr double kZero = 1e-12;
+constexpr double kZero = 1e-12;     // |g| below this (g scaled to unit size) counts as on the curve
 // Crossing points this close along a curve are one point: where several curves meet (the shadow of
 // a vertex shared by many sources), nearly double roots are only accurate to about sqrt(epsilon).
 constexpr double kCluster = 1e-7;
-constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it     // |g| below this (g scaled to unit size) counts as on the curve
+constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
 constexpr double kTwoPi = 6.283185307179586;
 
 double wrap2pi(double a) {
