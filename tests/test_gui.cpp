@@ -695,3 +695,70 @@ TEST(Gui, SearchRadiusFollowsTheInsertions) {
     EXPECT_EQ((long)num(o.out, "radius_plot", at), ins);
     EXPECT_EQ(num(o.out, "search_radius", at), num(o.out, "max", at));
 }
+
+// --graph: the graph of d^2 over T' is sampled with TargetSolver::direct_d2 (exact, frame units)
+// and reported in world units (times scale^2). Its maximum includes the marked maximum
+// (direct_d2 at max_point_2d), so it must equal the solver's max_sq (world units) to rounding,
+// and no grid sample may lie above it.
+TEST(Gui, GraphMaximumIsTheSolversMaximum) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "graph.png";
+    for (const char* step : {"end", "60"}) {
+        Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", step, "--graph"}, png, dir);
+        ASSERT_EQ(o.code, 0) << o.err;
+        const size_t at = o.out.find("\"graph\"");
+        ASSERT_NE(at, std::string::npos) << o.out;
+        const double samples = num(o.out, "samples", at), z_max = num(o.out, "z_max", at), grid = num(o.out, "grid_max", at);
+        const double max = num(o.out, "max", o.out.find("\"step_state\""));
+        EXPECT_EQ(samples, 65 * 66 / 2);
+        EXPECT_NEAR(z_max, max * max, 1e-12 * max * max) << step;
+        EXPECT_LE(grid, z_max * (1 + 1e-12)) << step;
+        EXPECT_GT(grid, 0.5 * z_max) << step;
+    }
+}
+
+// --overlay colours T' by the nearest source feature, computed from the inserted sources alone
+// (a point-triangle region test per source, double precision) and compares it with the domain
+// mesh's label at every overlay pixel (256 along T''s longer side). Pixels within 2 of a change of
+// either labelling are not compared: a pixel centre that close to a boundary may fall on either
+// side of the exact curve versus its sampled drawing, which says nothing about the labels. Away
+// from changes the labels must agree exactly (a tie between sources sharing an edge or a corner
+// counts as agreement), so disagree must be 0, at the end and mid construction.
+TEST(Gui, OverlayAgreesWithTheDomainMesh) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "overlay.png";
+    for (const char* step : {"end", "200"}) {
+        Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", step, "--overlay"}, png, dir);
+        ASSERT_EQ(o.code, 0) << o.err;
+        const size_t at = o.out.find("\"overlay\"");
+        ASSERT_NE(at, std::string::npos) << o.out;
+        const double samples = num(o.out, "samples", at), disagree = num(o.out, "disagree", at),
+                     ignored = num(o.out, "ignored", at);
+        EXPECT_EQ(disagree, 0) << step << ": " << o.out;
+        EXPECT_GT(samples, 5000) << step;
+        EXPECT_GT(samples, ignored) << step;   // most of T' is compared
+    }
+}
+
+// A left-drag inside the graph window orbits the graph (its yaw and pitch change), not the 3D view.
+TEST(Gui, DragInTheGraphOrbitsTheGraph) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "graph_drag.png";
+    Outcome a = run_gui({"--direction", "ba", "--target", "22", "--step", "end", "--graph"}, png, dir);
+    ASSERT_EQ(a.code, 0) << a.err;
+    const size_t ga = a.out.find("\"graph\"");
+    ASSERT_NE(ga, std::string::npos) << a.out;
+    std::vector<int> r = int_list(a.out.substr(ga), "rect");
+    ASSERT_EQ(r.size(), 4u) << a.out;
+    const int cx = r[0] + r[2] / 2, cy = r[1] + r[3] / 2;
+    const std::string drag = std::to_string(cx) + "," + std::to_string(cy) + "," + std::to_string(cx + 80) + "," +
+                             std::to_string(cy - 30);
+    Outcome b = run_gui({"--direction", "ba", "--target", "22", "--step", "end", "--graph", "--drag", drag}, png, dir);
+    ASSERT_EQ(b.code, 0) << b.err;
+    const size_t gb = b.out.find("\"graph\"");
+    ASSERT_NE(gb, std::string::npos) << b.out;
+    EXPECT_NE(num(a.out, "yaw", ga), num(b.out, "yaw", gb));
+    EXPECT_NE(num(a.out, "pitch", ga), num(b.out, "pitch", gb));
+    EXPECT_EQ(num(a.out, "yaw", a.out.find("\"camera\"")), num(b.out, "yaw", b.out.find("\"camera\"")));
+    EXPECT_EQ(num(a.out, "z_max", ga), num(b.out, "z_max", gb));
+}

@@ -9,7 +9,7 @@ namespace hlens::gui {
 
 const char* usage_text() {
     return "usage: hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]\n"
-           "             [--step N|end] [--event-log] [--case NAME [--epsilon E]] [--export-case DIR]\n"
+           "             [--step N|end] [--event-log] [--graph] [--overlay] [--case NAME [--epsilon E]] [--export-case DIR]\n"
            "\n"
            "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
            "(assets/demo_a.obj, assets/demo_b.obj).\n"
@@ -19,6 +19,8 @@ const char* usage_text() {
            "  --step N|end        open the timeline and the domain view of the target (needs --target)\n"
            "                      after event N of its construction (end: finished)\n"
            "  --event-log         with --step: also open the event log (every event, filterable)\n"
+           "  --graph             with --step: also open the graph of d^2 over the target\n"
+           "  --overlay           with --step: colour the domain view by the nearest source feature\n"
            "  --case NAME         load a built-in degenerate case instead of files (parallel,\n"
            "                      coplanar_overlap, shared_edge, shared_vertex, perpendicular, sliver,\n"
            "                      duplicated, target_in_source_plane); --epsilon E: near-degenerate\n"
@@ -91,6 +93,10 @@ Options parse_args(const std::vector<std::string>& args) {
             o.export_dir = value();
         } else if (a == "--event-log") {
             o.event_log = true;
+        } else if (a == "--graph") {
+            o.graph = true;
+        } else if (a == "--overlay") {
+            o.overlay = true;
         } else if (a == "--direction") {
             const std::string& v = value();
             if (v == "ab") o.direction = 0;

@@ -35,6 +35,8 @@ struct Options {
     double epsilon = 0;          // --epsilon E: its near-degeneracy
     bool epsilon_given = false;
     std::string export_dir;      // --export-case DIR: headless, export the selected target there      // --event-log: open the event log with the timeline
+    bool overlay = false;        // --overlay: with --step, the nearest-feature overlay in the domain view
+    bool graph = false;          // --graph: with --step, open the graph of d^2
     bool help = false;
 };
 

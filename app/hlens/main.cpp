@@ -141,6 +141,18 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
         j += ", \"domain_view\": [" + std::to_string((int)std::lround(st.view_rect[0] * fx)) + ", " +
              std::to_string((int)std::lround(st.view_rect[1] * fx)) + ", " + std::to_string((int)std::lround(st.view_rect[2] * fx)) +
              ", " + std::to_string((int)std::lround(st.view_rect[3] * fx)) + "]";
+        if (st.show_overlay && st.overlay_revision == st.revision)
+            j += ", \"overlay\": {\"samples\": " + std::to_string(st.overlay_samples) + ", \"disagree\": " +
+                 std::to_string(st.overlay_disagree) + ", \"ignored\": " + std::to_string(st.overlay_ignored) +
+                 ", \"ties\": " + std::to_string(st.overlay_ties) +
+                 ", \"gpu\": " + (st.overlay_gpu ? "true" : "false") + "}";
+        if (st.graph_open && st.graph_revision != 0)
+            j += ", \"graph\": {\"samples\": " + std::to_string(st.graph_samples) + ", \"z_max\": " + json_number(st.graph_z_max) +
+                 ", \"grid_max\": " + json_number(st.graph_grid_max) + ", \"max_sq\": " + json_number(st.solver->max_sq()) +
+                 ", \"yaw\": " + json_number(st.graph_yaw) + ", \"pitch\": " + json_number(st.graph_pitch) +
+                 ", \"zoom\": " + json_number(st.graph_zoom) + ", \"rect\": [" + std::to_string((int)st.graph_rect[0]) + ", " +
+                 std::to_string((int)st.graph_rect[1]) + ", " + std::to_string((int)st.graph_rect[2]) + ", " +
+                 std::to_string((int)st.graph_rect[3]) + "]}";
         if (st.event_log)
             j += ", \"event_log\": {\"shown\": " + std::to_string(st.log_shown) + ", \"total\": " + std::to_string(st.log_total) + "}";
     } else {
@@ -273,6 +285,8 @@ int main(int argc, char** argv) {
     s.style[1].color[0] = 0.55f, s.style[1].color[1] = 0.66f, s.style[1].color[2] = 0.88f;
     set_direction(s, opt.direction);
     s.stepper.event_log = opt.event_log;
+    s.stepper.graph_open = opt.graph;
+    s.stepper.show_overlay = opt.overlay;
     if (!opt.case_name.empty() && !load_builtin_case(s, opt.case_name, opt.epsilon)) {
         std::fprintf(stderr, "hlens: unknown case '%s'\n%s", opt.case_name.c_str(), usage_text());
         return 2;

@@ -1,5 +1,7 @@
 #include "panels.h"
 
+#include "graph.h"
+
 #include <algorithm>
 #include <cinttypes>
 #include <cmath>
@@ -483,6 +485,7 @@ void draw_panels(AppState& s) {
     ImGui::End();
     target_window(s);
     draw_domain_view(s);
+    draw_graph_view(s);
     draw_timeline(s);
     draw_event_log(s);
     error_panel(s);

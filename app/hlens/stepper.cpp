@@ -10,6 +10,7 @@
 
 #include "app_state.h"
 #include "gl.h"
+#include "overlay.h"
 
 namespace hlens::gui {
 
@@ -164,6 +165,7 @@ std::string event_text(const Event& e) {
 }  // namespace
 
 std::string event_summary(const Event& e) { return event_text(e); }
+unsigned domain_label_colour(const DomainLabel& l, bool infinite) { return label_colour(l, infinite); }
 
 // ---- Stepper
 
@@ -270,6 +272,7 @@ const Event* Stepper::regions_event() const {
 }
 
 void Stepper::rebuild() {
+    ++revision;
     jump_input = (int)std::max(-1L, step);
     domains.clear();
     arcs.clear();
@@ -371,6 +374,9 @@ void draw_timeline(AppState& s) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("outline the seven regions of the source being inserted");
     ImGui::SameLine();
     ImGui::Checkbox("event log", &st.event_log);
+    ImGui::SameLine();
+    ImGui::Checkbox("graph", &st.graph_open);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the graph of d^2 over T' at this step (drag orbits, wheel zooms)");
 
     // Keys: Left/Right step, Space plays, unless a text field (or another widget) has the keyboard.
     ImGuiIO& io = ImGui::GetIO();
@@ -508,9 +514,17 @@ void draw_domain_view(AppState& s) {
     dl->PushClipRect(c0, c1, true);
     dl->AddRectFilled(c0, c1, IM_COL32(24, 25, 30, 255));
 
+    // The overlay (nearest feature, independent of the domain mesh) replaces the domain fills.
+    if (st.show_overlay) update_overlay(st);
+    const bool overlay = st.show_overlay && st.overlay_tex && st.overlay_w > 0;
+    if (overlay)
+        dl->AddImage((ImTextureID)(intptr_t)st.overlay_tex, to_screen(Vec2(st.overlay_lo.x, st.overlay_hi.y)),
+                     to_screen(Vec2(st.overlay_hi.x, st.overlay_lo.y)), ImVec2(0, st.overlay_gpu ? 1.0f : 0.0f),
+                     ImVec2(1, st.overlay_gpu ? 0.0f : 1.0f));
     // Domains: triangles without anti-aliased fringes, so neighbouring triangles leave no seams.
     const ImVec2 uv = ImGui::GetFontTexUvWhitePixel();
     for (const DomainDraw& d : st.domains) {
+        if (overlay) break;
         if (d.tris.empty()) continue;
         const int nv = (int)d.outer.size(), ni = (int)d.tris.size();
         dl->PrimReserve(ni, nv);
@@ -599,6 +613,19 @@ void draw_domain_view(AppState& s) {
     // Legend: every label once, with its colour.
     ImGui::SameLine();
     ImGui::BeginChild("legend", ImVec2(0, csize.y), false);
+    ImGui::Checkbox("overlay", &st.show_overlay);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("colour T' by the nearest source feature, computed directly from the sources\n"
+                          "(CPU, %d px), and compare with the domain mesh's labels", 256);
+    if (st.show_overlay && st.overlay_revision == st.revision && mesh) {
+        if (st.overlay_disagree == 0)
+            ImGui::TextColored(ImVec4(0.5f, 1, 0.5f, 1), "overlay agrees");
+        else
+            ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "overlay disagrees at %ld samples: core bug?", st.overlay_disagree);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("%ld samples compared (%ld agree by a tie between sources),\n%ld within 2 px of a change not compared",
+                              st.overlay_samples, st.overlay_ties, st.overlay_ignored);
+    }
     ImGui::TextDisabled("%d domains", st.live_domains);
     std::map<std::pair<int, int>, std::pair<ImU32, int>> labels;
     for (const DomainDraw& d : st.domains) {

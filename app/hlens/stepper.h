@@ -7,6 +7,7 @@
 // target's frame; the domain view only transforms and draws them.
 #pragma once
 #include <climits>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,6 +74,29 @@ struct Stepper {
 
     std::vector<float> radius_plot;   // search radius after insertion 1, 2, ... up to the current step
 
+    // The graph of d^2 over T' (graph.cpp): rebuilt when `revision` changes (every rebuild()).
+    unsigned long revision = 0;
+    bool graph_open = false;
+    unsigned long graph_revision = 0;   // the revision the graph was built for (0: never)
+    long graph_samples = 0;
+    double graph_z_max = NAN;           // max of d^2 over the samples and the marked maximum (world units)
+    double graph_grid_max = NAN;        // max over the grid samples alone (world units)
+    double graph_z_min = NAN;           // min over the grid samples (world units)
+    bool graph_relief = true;           // heights from min to max d^2 (else from 0)
+    float graph_yaw = -1.35f, graph_pitch = 0.6f, graph_zoom = 1.0f;
+    float graph_rect[4] = {0, 0, 0, 0}; // the graph's canvas on screen (window coordinates)
+
+    // The independent nearest-feature overlay of the domain view (overlay.cpp).
+    bool show_overlay = false;
+    unsigned long overlay_revision = 0;
+    long overlay_samples = 0, overlay_disagree = 0, overlay_ignored = 0;
+    long overlay_ties = 0;              // compared samples whose label differs from the first nearest feature by a tie
+    int overlay_w = 0, overlay_h = 0;
+    Vec2 overlay_lo, overlay_hi;        // the texture's extent in the target's frame
+    unsigned overlay_tex = 0;           // GL texture name
+    bool overlay_use_gpu = true;        // draw the overlay with overlay.frag.glsl (the comparison stays on the CPU)
+    bool overlay_gpu = false;           // the texture shown came from the GPU (row 0 at the bottom)
+
     // The domain view's canvas on screen, for the headless JSON line.
     float view_rect[4] = {0, 0, 0, 0};
 
@@ -89,6 +113,9 @@ struct Stepper {
     // The last RegionsProjected event at or before the current step, if any.
     const Event* regions_event() const;
 };
+
+// The colour of a domain label in the 2D domain view (ImU32), shared by the graph view.
+unsigned domain_label_colour(const DomainLabel& l, bool infinite);
 
 // Keeps the stepper on the selected target of the current direction (reset when it changes).
 struct AppState;
