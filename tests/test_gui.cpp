@@ -762,3 +762,47 @@ TEST(Gui, DragInTheGraphOrbitsTheGraph) {
     EXPECT_EQ(num(a.out, "yaw", a.out.find("\"camera\"")), num(b.out, "yaw", b.out.find("\"camera\"")));
     EXPECT_EQ(num(a.out, "z_max", ga), num(b.out, "z_max", gb));
 }
+
+// "voxels & radius": the voxels seen up to the current step, by state. Visited and culled are
+// the voxel_visited / voxel_culled events of hlens-cli trace up to that step (B to A: swapped).
+TEST(Gui, VoxelsFollowTheEventStream) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir();
+    Outcome t = run({kCli, "trace", kDemoB, kDemoA, "--target", "22", "--json"}, dir);
+    ASSERT_EQ(t.code, 0) << t.err;
+    std::vector<std::string> lines;
+    std::istringstream in(t.out);
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    for (const char* step : {"40", "end"}) {
+        fs::path png = dir / (std::string("voxels-") + step + ".png");
+        Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", step}, png, dir);
+        ASSERT_EQ(o.code, 0) << o.err;
+        const size_t at = o.out.find("\"voxels\"");
+        ASSERT_NE(at, std::string::npos) << o.out;
+        const long cur = (long)num(o.out, "step");
+        long visited = 0, culled = 0;
+        for (const std::string& l : lines) {
+            if (l.find("\"event\": \"final\"") != std::string::npos || (long)num(l, "step") > cur) continue;
+            visited += l.find("\"voxel_visited\"") != std::string::npos;
+            culled += l.find("\"voxel_culled\"") != std::string::npos;
+        }
+        EXPECT_GT((long)num(o.out, "visited", at), 0) << step;
+        EXPECT_EQ((long)num(o.out, "visited", at), visited) << step;
+        EXPECT_EQ((long)num(o.out, "culled", at), culled) << step;
+        EXPECT_GE((long)num(o.out, "pending", at), 0) << step;
+    }
+}
+
+// F1 opens the Help window; no shortcut acts while a text field has the keyboard (here the
+// target window's index field, clicked first).
+TEST(Gui, F1ShowsHelpButNotWhileTyping) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "help.png";
+    Outcome a = run_gui({"--direction", "ba", "--target", "22", "--key", "f1"}, png, dir);
+    ASSERT_EQ(a.code, 0) << a.err;
+    EXPECT_EQ(raw_value(a.out, "help"), "true");
+    Outcome b = run_gui({"--direction", "ba", "--target", "22", "--click", "620,42", "--key", "f1"}, png, dir);
+    ASSERT_EQ(b.code, 0) << b.err;
+    EXPECT_EQ(raw_value(b.out, "help"), "false");
+    EXPECT_EQ((long)num(b.out, "target"), 22);
+}

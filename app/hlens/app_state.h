@@ -89,6 +89,7 @@ struct AppState {
     std::string phase;
     double elapsed = 0;
 
+    bool help_open = false;       // the Help window (F1)
     Stepper stepper;              // the timeline and the domain view of the selected target
 
     ViewRect view;

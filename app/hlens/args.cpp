@@ -30,12 +30,13 @@ const char* usage_text() {
            "  --screenshot PATH   headless: wait for the computation, render, write a PNG, print the\n"
            "                      state as one JSON line on stdout and exit (0; 2 on bad input)\n"
            "\n"
-           "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --key home|f12|left|right|space\n"
+           "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --key home|f1|f12|left|right|space\n"
            "                      with --screenshot: input played in order once the computation\n"
            "                      is done (window pixels from the top-left)\n"
            "\n"
            "Mouse: left-drag orbits, right- or shift+left-drag pans, the wheel zooms, a click picks a\n"
-           "target, a double-click recentres. Keys: Home resets the camera, F12 saves a PNG.\n";
+           "target, a double-click recentres. Keys: Home resets the camera, F12 saves a PNG, F1 shows\n"
+           "every mouse action and shortcut (keys are ignored while typing in a text field).\n";
 }
 
 namespace {
@@ -123,10 +124,11 @@ Options parse_args(const std::vector<std::string>& args) {
             k.kind = InputAction::Key;
             if (v == "home") k.key = GLFW_KEY_HOME;
             else if (v == "f12") k.key = GLFW_KEY_F12;
+            else if (v == "f1") k.key = GLFW_KEY_F1;
             else if (v == "left") k.key = GLFW_KEY_LEFT;
             else if (v == "right") k.key = GLFW_KEY_RIGHT;
             else if (v == "space") k.key = GLFW_KEY_SPACE;
-            else throw UsageError("--key expects home, f12, left, right or space, got '" + v + "'");
+            else throw UsageError("--key expects home, f1, f12, left, right or space, got '" + v + "'");
             o.input.push_back(k);
         } else if (a == "--drag") {
             auto v = parse_floats(value(), 4, a);

@@ -31,7 +31,7 @@ void draw_event_log(AppState& s) {
     ImGui::SetNextWindowSize(ImVec2(w, std::max(10 * em(), v.h * 0.58f - tl_h)), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.95f);
     bool open = true;
-    if (!ImGui::Begin("Event log", &open, ImGuiWindowFlags_NoSavedSettings)) {
+    if (!ImGui::Begin("Event log", &open)) {
         ImGui::End();
         st.event_log = open;
         return;

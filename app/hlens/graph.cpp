@@ -254,7 +254,7 @@ void draw_graph_view(AppState& s) {
     ImGui::SetNextWindowPos(ImVec2(v.x + v.w - 0.5f * em, v.y + 0.5f * em), ImGuiCond_FirstUseEver, ImVec2(1, 0));
     ImGui::SetNextWindowSize(ImVec2(std::min(v.w - em, 30 * em), std::min(v.h - 10 * em, 26 * em)), ImGuiCond_FirstUseEver);
     bool open = true;
-    if (!ImGui::Begin("Graph of d^2", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
+    if (!ImGui::Begin("Graph of d^2", &open, ImGuiWindowFlags_NoScrollbar |
                                                  ImGuiWindowFlags_NoScrollWithMouse)) {
         ImGui::End();
         st.graph_open = open;

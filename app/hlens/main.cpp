@@ -5,6 +5,8 @@
 //   5. panels  6. act on the panels' requests  7. render  8. screenshots  9. swap
 // Loading and computing run on background threads (compute.h); the loop only polls them.
 //
+// Interactive runs keep the floating windows' layout in ~/.config/hlens/imgui.ini
+// ($XDG_CONFIG_HOME/hlens/); the sidebar, target and error windows are placed every frame.
 // Headless (--screenshot PATH): vsync off, no imgui.ini; the loop waits for the computation (and
 // the trace of --target), lets ImGui settle for a few frames, reads the back buffer into a PNG
 // before swapping, prints the state as one JSON line on stdout and exits (0, or 2 on bad input).
@@ -123,6 +125,7 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
     j += ", \"viewport\": [" + std::to_string(vx) + ", 0, " + std::to_string(vw) + ", " + std::to_string(fb_h) + "]";
     if (s.case_loaded) j += ", \"case\": \"" + s.case_name + "\", \"epsilon\": " + json_number(s.case_eps);
     if (s.export_ok) j += ", \"exported\": true";
+    j += ", \"help\": " + std::string(s.help_open ? "true" : "false");
     const Stepper& st = s.stepper;
     if (st.open && st.active()) {   // the timeline's state: "step" is the current event (-1: none yet)
         const TargetSolver& ts = *st.solver;
@@ -136,6 +139,8 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
              ", \"search_radius\": " + json_number(ts.search_radius()) +
              ", \"highlighted\": " + std::to_string(ts.inserted_sources().size()) +
              ", \"radius_plot\": " + std::to_string(st.radius_plot.size()) + "}";
+        j += ", \"voxels\": {\"visited\": " + std::to_string(st.vox_visited) + ", \"pending\": " +
+             std::to_string(st.vox_pending) + ", \"culled\": " + std::to_string(st.vox_culled) + "}";
         const float fx = fb_w / std::max(1.0f, s.view.x + s.view.w), fy = 1.0f;   // window -> framebuffer
         (void)fy;
         j += ", \"domain_view\": [" + std::to_string((int)std::lround(st.view_rect[0] * fx)) + ", " +
@@ -541,7 +546,8 @@ int main(int argc, char** argv) {
             }
             for (int b = 0; b < 3; ++b)
                 if (ImGui::IsMouseReleased(b)) press_in_view[b] = false;
-            if (!io.WantCaptureKeyboard) {
+            if (!io.WantCaptureKeyboard && !io.WantTextInput) {   // never while typing in a text field
+                if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) s.help_open = !s.help_open;
                 if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) s.req.home = true;
                 if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) s.req.screenshot = true;
             }

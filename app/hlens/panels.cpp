@@ -363,7 +363,7 @@ void drop_popup(AppState& s) {
         if (ImGui::Button("Swap", ImVec2(5 * em(), 0))) std::swap(s.dropped[0], s.dropped[1]);
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(5 * em(), 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    if (ImGui::Button("Cancel", ImVec2(5 * em(), 0)) || (!ImGui::GetIO().WantTextInput && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))) {
         s.dropped.clear();
         ImGui::CloseCurrentPopup();
     }
@@ -404,15 +404,47 @@ void cases_section(AppState& s) {
         ImGui::TextColored(s.export_ok ? ImVec4(0.6f, 1, 0.6f, 1) : ImVec4(1, 0.5f, 0.5f, 1), "%s", s.export_status.c_str());
 }
 
-void help_section() {
-    if (!ImGui::CollapsingHeader("Help")) return;
+// Every mouse action and keyboard shortcut (the sidebar's Help section and the F1 window).
+// Shortcuts are ignored while a text field has the keyboard (io.WantTextInput).
+void help_text() {
+    ImGui::TextDisabled("3D view");
     ImGui::BulletText("left-drag: orbit");
-    ImGui::BulletText("right-drag or shift+left-drag: pan");
+    ImGui::BulletText("right-drag, middle-drag or shift+left-drag: pan");
     ImGui::BulletText("wheel: zoom");
-    ImGui::BulletText("click: pick the target T'");
+    ImGui::BulletText("click: pick the target T' (click the background: clear)");
     ImGui::BulletText("double-click: recentre there");
+    ImGui::TextDisabled("Domain view (timeline)");
+    ImGui::BulletText("right-drag: pan   wheel: zoom");
+    ImGui::BulletText("double-click: fit   hover: the domain's label");
+    ImGui::TextDisabled("Graph of d^2");
+    ImGui::BulletText("left-drag: orbit   wheel: zoom");
+    ImGui::TextDisabled("Event log");
+    ImGui::BulletText("click a row: jump to that step");
+    ImGui::TextDisabled("Keys (not while typing in a text field)");
     ImGui::BulletText("Home: reset the view");
     ImGui::BulletText("F12: save hlens-<time>.png");
+    ImGui::BulletText("F1: this help in a window");
+    ImGui::BulletText("Left / Right: one event back / forward (timeline)");
+    ImGui::BulletText("Space: play / pause (timeline)");
+    ImGui::BulletText("Escape: cancel the dropped-files dialog");
+    ImGui::TextDisabled("Other");
+    ImGui::BulletText("drop files on the window: open them as A and B");
+    ImGui::TextDisabled("'voxels & radius' (timeline): voxels seen so far");
+    ImGui::TextDisabled("(green visited, yellow pending, grey culled) and a");
+    ImGui::TextDisabled("sphere of radius r + reach of T' around its centroid,");
+    ImGui::TextDisabled("enclosing all points within the search radius r of T'.");
+}
+
+void help_section() {
+    if (!ImGui::CollapsingHeader("Help")) return;
+    help_text();
+}
+
+void help_window(AppState& s) {
+    if (!s.help_open) return;
+    ImGui::SetNextWindowPos(ImVec2(s.view.x + 2 * em(), s.view.y + 2 * em()), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Help (F1)", &s.help_open, ImGuiWindowFlags_AlwaysAutoResize)) help_text();
+    ImGui::End();
 }
 
 void error_panel(AppState& s) {
@@ -488,6 +520,7 @@ void draw_panels(AppState& s) {
     draw_graph_view(s);
     draw_timeline(s);
     draw_event_log(s);
+    help_window(s);
     error_panel(s);
     drop_popup(s);
 }
@@ -529,6 +562,53 @@ void draw_view_overlay(const AppState& s, const Scene& scene, const glm::mat4& m
                 const bool last = i + 1 == ins.size();
                 dl->AddTriangleFilled(q[0], q[1], q[2], last ? IM_COL32(255, 200, 40, 150) : IM_COL32(40, 220, 255, 90));
                 dl->AddPolyline(q, 3, last ? IM_COL32(255, 220, 80, 255) : IM_COL32(60, 230, 255, 220), ImDrawFlags_Closed, 1.5f);
+            }
+            if (st.show_voxels && s.scene->grid) {
+                // Voxels seen so far at the current step, as wireframe boxes coloured by state.
+                static const int kEdge[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
+                                                 {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+                for (const auto& [vox, state] : st.voxels) {
+                    if (vox >= s.scene->grid->num_voxels()) continue;
+                    const Box3 b = s.scene->grid->voxel_box(vox);
+                    ImVec2 q[8];
+                    bool ok = true;
+                    for (int k = 0; k < 8 && ok; ++k)
+                        ok = project(mvp, v, scene.local(Vec3{k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z}), q[k]);
+                    if (!ok) continue;
+                    const ImU32 col = state == 2 ? IM_COL32(70, 230, 90, 200) : state == 1 ? IM_COL32(240, 220, 60, 200)
+                                                                                        : IM_COL32(140, 140, 140, 150);
+                    for (const auto& e : kEdge) dl->AddLine(q[e[0]], q[e[1]], col, 1.0f);
+                }
+                // The search radius envelope: the sphere around the centroid of T' of radius
+                // r + (farthest corner from the centroid). It encloses every point within r of T'
+                // (a bounding sphere of that set, not the set itself). Drawn as the projected
+                // outline of the sphere (the farthest projection of points sampled on it).
+                const double r = st.solver->search_radius();
+                if (std::isfinite(r) && t >= 0) {
+                    auto c = s.scene->mesh[d].corners((size_t)t);
+                    const Vec3 g{(c[0].x + c[1].x + c[2].x) / 3, (c[0].y + c[1].y + c[2].y) / 3, (c[0].z + c[1].z + c[2].z) / 3};
+                    double reach = 0;
+                    for (const Vec3& p : c) reach = std::max(reach, norm(p - g));
+                    const double R = r + reach;
+                    ImVec2 cg;
+                    if (project(mvp, v, scene.local(g), cg)) {
+                        float rad = 0;
+                        bool ok = true;
+                        for (int i = 0; i <= 12 && ok; ++i)
+                            for (int j = 0; j < 24 && ok; ++j) {
+                                const double th = M_PI * i / 12, ph = 2 * M_PI * j / 24;
+                                const Vec3 p{g.x + R * std::sin(th) * std::cos(ph), g.y + R * std::sin(th) * std::sin(ph), g.z + R * std::cos(th)};
+                                ImVec2 q;
+                                ok = project(mvp, v, scene.local(p), q);
+                                if (ok) rad = std::max(rad, std::hypot(q.x - cg.x, q.y - cg.y));
+                            }
+                        if (ok && rad > 0) {
+                            dl->AddCircleFilled(cg, rad, IM_COL32(120, 170, 255, 40), 64);
+                            dl->AddCircle(cg, rad, IM_COL32(140, 190, 255, 200), 64, 1.5f);
+                            dl->AddText(ImVec2(cg.x + 0.72f * rad, cg.y - 0.72f * rad), IM_COL32(170, 205, 255, 255), "search radius");
+                        }
+                    }
+                }
             }
         }
         // Witnesses: from_point (filled) on the measured mesh, to_point (ring) on the other.

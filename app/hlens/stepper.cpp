@@ -182,6 +182,8 @@ void Stepper::clear() {
     arcs.clear();
     vertices.clear();
     live_domains = live_arcs = live_vertices = 0;
+    voxels.clear();
+    vox_visited = vox_pending = vox_culled = 0;
 }
 
 void Stepper::reset(std::shared_ptr<const LoadedScene> sc, int sd, long t) {
@@ -263,6 +265,31 @@ void Stepper::jump(long n) {
     rebuild();
 }
 
+void Stepper::rebuild_voxels() {
+    voxels.clear();
+    vox_visited = vox_pending = vox_culled = 0;
+    if (!solver) return;
+    const auto& ev = solver->events();
+    long V = 0, C = 0;
+    for (long i = 0; i <= std::min<long>(step, (long)ev.size() - 1); ++i) {
+        if (ev[i].kind == EventKind::VoxelVisited) ++V;
+        if (ev[i].kind == EventKind::VoxelCulled) ++C;
+    }
+    // The k-th visited (culled) entry of voxel_states() is the k-th VoxelVisited (VoxelCulled)
+    // event; pending entries belong to the visit before them.
+    std::map<size_t, uint8_t> state;
+    long v = 0, c = 0;
+    for (const auto& [vox, st] : solver->voxel_states()) {
+        if (st == 2 && v++ >= V) break;
+        if (st == 3 && c++ >= C) break;
+        state[vox] = st;
+    }
+    for (const auto& [vox, st] : state) {
+        voxels.push_back({vox, st});
+        (st == 2 ? vox_visited : st == 3 ? vox_culled : vox_pending)++;
+    }
+}
+
 const Event* Stepper::regions_event() const {
     if (!solver) return nullptr;
     const auto& ev = solver->events();
@@ -278,6 +305,7 @@ void Stepper::rebuild() {
     arcs.clear();
     vertices.clear();
     live_domains = live_arcs = live_vertices = 0;
+    rebuild_voxels();
     const DomainMesh* m = solver ? solver->domain_mesh() : nullptr;
     if (!m) return;
     live_domains = m->num_live_faces();
@@ -338,7 +366,7 @@ void draw_timeline(AppState& s) {
     char title[96];
     std::snprintf(title, sizeof title, "Timeline: target %ld of %s###timeline", st.target, st.side == 0 ? "A" : "B");
     bool open = true;
-    if (!ImGui::Begin(title, &open, ImGuiWindowFlags_NoSavedSettings)) {
+    if (!ImGui::Begin(title, &open)) {   // position and size kept in imgui.ini (interactive runs)
         ImGui::End();
         st.open = open;
         return;
@@ -371,6 +399,14 @@ void draw_timeline(AppState& s) {
     if (go) st.jump(std::max(-1, st.jump_input));
     ImGui::SameLine();
     ImGui::Checkbox("regions", &st.show_regions);
+    ImGui::SameLine();
+    ImGui::Checkbox("voxels & radius", &st.show_voxels);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("3D view: voxels seen so far (green visited, yellow pending, grey culled)\n"
+                          "and the search radius envelope: a sphere around the centroid of T' of\n"
+                          "radius r + (farthest corner from the centroid), enclosing every point\n"
+                          "within r of T' (%ld visited, %ld pending, %ld culled)",
+                          st.vox_visited, st.vox_pending, st.vox_culled);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("outline the seven regions of the source being inserted");
     ImGui::SameLine();
     ImGui::Checkbox("event log", &st.event_log);
@@ -458,7 +494,7 @@ void draw_domain_view(AppState& s) {
     ImGui::SetNextWindowSize(ImVec2(dv_w, std::max(12 * em(), v.h - tl_h)), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.96f);
     bool open = true;
-    if (!ImGui::Begin("Domain view", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar |
+    if (!ImGui::Begin("Domain view", &open, ImGuiWindowFlags_NoScrollbar |
                                                 ImGuiWindowFlags_NoScrollWithMouse)) {
         ImGui::End();
         st.open = open;

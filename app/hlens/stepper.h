@@ -72,6 +72,13 @@ struct Stepper {
     long log_scrolled_step = -2;      // the step last scrolled into view
     long log_shown = 0, log_total = 0;   // for the headless JSON line
 
+    // Voxels seen so far at the current step, and the search radius envelope, in the 3D view.
+    // voxel_states() is not tied to steps (the solver may run ahead of the current event), so
+    // rebuild() replays it only as far as the VoxelVisited/VoxelCulled events up to `step`.
+    bool show_voxels = true;
+    std::vector<std::pair<size_t, uint8_t>> voxels;   // (voxel, 1 pending / 2 visited / 3 culled), latest state
+    long vox_visited = 0, vox_pending = 0, vox_culled = 0;
+
     std::vector<float> radius_plot;   // search radius after insertion 1, 2, ... up to the current step
 
     // The graph of d^2 over T' (graph.cpp): rebuilt when `revision` changes (every rebuild()).
@@ -110,6 +117,7 @@ struct Stepper {
     void to_end();
     void jump(long n);                // to just after event n (LONG_MAX: the end)
     void rebuild();
+    void rebuild_voxels();            // `voxels` and the counts at the current step
     // The last RegionsProjected event at or before the current step, if any.
     const Event* regions_event() const;
 };
