@@ -196,14 +196,7 @@ void build(Stepper& st) {
 
 void render(const Stepper& st, int w, int h) {
     ensure_target(w, h);
-    GLint old_fbo = 0, old_vp[4];
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &old_fbo);
-    glGetIntegerv(GL_VIEWPORT, old_vp);
-    const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND), cull = glIsEnabled(GL_CULL_FACE),
-                    scissor = glIsEnabled(GL_SCISSOR_TEST);
-    GLint old_prog = 0, old_vao = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &old_prog);
-    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &old_vao);
+    GlStateGuard saved;
 
     glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
     glViewport(0, 0, w, h);
@@ -234,14 +227,6 @@ void render(const Stepper& st, int w, int h) {
     glBindVertexArray(g.vao[1]);
     glDrawArrays(GL_LINES, 0, g.count[1]);
 
-    glBindVertexArray((GLuint)old_vao);
-    glUseProgram((GLuint)old_prog);
-    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)old_fbo);
-    glViewport(old_vp[0], old_vp[1], old_vp[2], old_vp[3]);
-    (depth ? glEnable : glDisable)(GL_DEPTH_TEST);
-    (blend ? glEnable : glDisable)(GL_BLEND);
-    (cull ? glEnable : glDisable)(GL_CULL_FACE);
-    (scissor ? glEnable : glDisable)(GL_SCISSOR_TEST);
 }
 
 }  // namespace

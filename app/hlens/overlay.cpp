@@ -107,13 +107,7 @@ bool render_gpu(const std::vector<std::array<Vec3, 3>>& src, const std::vector<u
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 10, n, 0, GL_RGBA, GL_FLOAT, data.data());
     const float quad[12] = {(float)lo.x, (float)lo.y, (float)hi.x, (float)lo.y, (float)hi.x, (float)hi.y,
                             (float)lo.x, (float)lo.y, (float)hi.x, (float)hi.y, (float)lo.x, (float)hi.y};
-    GLint old_fbo = 0, old_vp[4], old_prog = 0, old_vao = 0, old_tex = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &old_fbo);
-    glGetIntegerv(GL_VIEWPORT, old_vp);
-    glGetIntegerv(GL_CURRENT_PROGRAM, &old_prog);
-    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &old_vao);
-    const GLboolean depth = glIsEnabled(GL_DEPTH_TEST), blend = glIsEnabled(GL_BLEND), cull = glIsEnabled(GL_CULL_FACE),
-                    scissor = glIsEnabled(GL_SCISSOR_TEST);
+    GlStateGuard saved;
     glBindVertexArray(g_gpu.vao);
     glBindBuffer(GL_ARRAY_BUFFER, g_gpu.vbo);
     glBufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
@@ -137,16 +131,8 @@ bool render_gpu(const std::vector<std::array<Vec3, 3>>& src, const std::vector<u
     glUniform2f(glGetUniformLocation(P, "u_t2"), (float)fr.corners[2].x, (float)fr.corners[2].y);
     glUniform4f(glGetUniformLocation(P, "u_none"), 70 / 255.0f, 72 / 255.0f, 80 / 255.0f, 1.0f);
     glDrawArrays(GL_TRIANGLES, 0, 6);
-    glBindTexture(GL_TEXTURE_2D, (GLuint)old_tex);
+    glBindTexture(GL_TEXTURE_2D, 0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    glBindVertexArray((GLuint)old_vao);
-    glUseProgram((GLuint)old_prog);
-    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)old_fbo);
-    glViewport(old_vp[0], old_vp[1], old_vp[2], old_vp[3]);
-    (depth ? glEnable : glDisable)(GL_DEPTH_TEST);
-    (blend ? glEnable : glDisable)(GL_BLEND);
-    (cull ? glEnable : glDisable)(GL_CULL_FACE);
-    (scissor ? glEnable : glDisable)(GL_SCISSOR_TEST);
     return true;
 }
 
