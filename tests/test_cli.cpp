@@ -5,6 +5,8 @@
 // single stderr line of errors, and the JSON output (validated by a small JSON checker here, then
 // read by key).
 #include <gtest/gtest.h>
+
+#include "test_support.h"
 #include <sys/wait.h>
 
 #include <array>
@@ -22,34 +24,14 @@
 #include <vector>
 
 namespace fs = std::filesystem;
+using hlens_test::Outcome;
+using hlens_test::quote;
+using hlens_test::read_file;
+using hlens_test::write_file;
 
 namespace {
 
 const std::string kCli = HLENS_CLI;
-
-struct Outcome {
-    int code = -1;  // exit code; -1 if the process did not exit normally (killed by a signal)
-    std::string out, err;
-};
-
-std::string read_file(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-void write_file(const fs::path& p, const std::string& text) {
-    std::ofstream f(p, std::ios::binary);
-    f << text;
-}
-
-// Single-quoted for /bin/sh: safe for any path or argument.
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
 
 std::vector<std::string> lines(const std::string& text) {
     std::vector<std::string> v;

@@ -8,6 +8,8 @@
 #ifdef HLENS_GUI
 
 #include <gtest/gtest.h>
+
+#include "test_support.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -34,6 +36,10 @@
 #pragma GCC diagnostic pop
 
 namespace fs = std::filesystem;
+using hlens_test::Outcome;
+using hlens_test::quote;
+using hlens_test::read_file;
+using hlens_test::write_file;
 
 namespace {
 
@@ -48,24 +54,6 @@ constexpr std::array<int, 3> kErrorBg = {128, 23, 23};     // kErrorBg (0.50, 0.
 constexpr std::array<int, 3> kMapLow = {71, 1, 85};        // viridis at 0
 constexpr std::array<int, 3> kMapHigh = {252, 231, 33};    // viridis at 1
 constexpr std::array<int, 3> kSelected = {255, 64, 217};   // the selected target (1, 0.25, 0.85)
-
-struct Outcome {
-    int code = -1;
-    std::string out, err;
-};
-
-std::string read_file(const fs::path& p) {
-    std::ifstream f(p, std::ios::binary);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
 
 fs::path scratch_dir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
