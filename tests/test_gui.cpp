@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "test_support.h"
+#include "mesh_io.h"
+#include "target_solver.h"
+#include "voxel_grid.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -82,10 +86,11 @@ bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 
 
 // hlens <args> --screenshot <png> --size 800x600 under a fresh X server. xvfb-run -a can lose a
 // race for a display number when tests run in parallel: such a start failure is retried.
-Outcome run_gui(std::vector<std::string> args, const fs::path& png, const fs::path& dir, const fs::path& cwd = {}) {
-    std::vector<std::string> argv = {"xvfb-run", "-a", "-s", "-screen 0 1280x800x24", kGui};
+Outcome run_gui(std::vector<std::string> args, const fs::path& png, const fs::path& dir, const fs::path& cwd = {},
+                const std::string& size = "800x600") {
+    std::vector<std::string> argv = {"xvfb-run", "-a", "-s", "-screen 0 2600x1600x24", kGui};
     argv.insert(argv.end(), args.begin(), args.end());
-    argv.insert(argv.end(), {"--screenshot", png.string(), "--size", "800x600"});
+    argv.insert(argv.end(), {"--screenshot", png.string(), "--size", size});
     Outcome o;
     for (int attempt = 0; attempt < 4; ++attempt) {
         o = run(argv, dir, cwd);
@@ -164,6 +169,20 @@ std::string raw_value(const std::string& json, const std::string& key, size_t fr
 double num(const std::string& json, const std::string& key, size_t from = 0) {
     std::string v = raw_value(json, key, from);
     return v.empty() || v == "null" ? NAN : std::strtod(v.c_str(), nullptr);
+}
+std::vector<double> num_list(const std::string& json, const std::string& key, size_t from = 0) {
+    std::string v = raw_value(json, key, from);
+    std::vector<double> r;
+    for (size_t i = 0; i < v.size();) {
+        if (std::isdigit((unsigned char)v[i]) || v[i] == '-') {
+            char* end = nullptr;
+            r.push_back(std::strtod(v.c_str() + i, &end));
+            i = end - v.c_str();
+        } else {
+            ++i;
+        }
+    }
+    return r;
 }
 std::vector<int> int_list(const std::string& json, const std::string& key) {
     std::string v = raw_value(json, key);
@@ -501,9 +520,9 @@ TEST(Gui, StepShowsTheTargetMidConstruction) {
     ASSERT_NE(at, std::string::npos) << o.out;
     const long domains = (long)num(o.out, "domains", at), insertions = (long)num(o.out, "insertions", at);
 
-    // Independently: replay hlens-cli's event stream. The solver applies a whole insertion at once,
-    // so the state at event 40 is the state at the end of the insertion that event 40 belongs to:
-    // one domain (T') plus what every split added, minus every merge, over those insertions.
+    // Independently: replay hlens-cli's event stream. The view shows the state at event 40 itself
+    // (the debugger keeps a snapshot at each event inside an insertion): one domain (T') plus what
+    // every split up to event 40 added, minus every merge up to it.
     Outcome t = run({kCli, "trace", kDemoB, kDemoA, "--target", "22", "--json"}, dir);
     ASSERT_EQ(t.code, 0) << t.err;
     std::vector<std::string> lines;
@@ -512,13 +531,17 @@ TEST(Gui, StepShowsTheTargetMidConstruction) {
     ASSERT_GT(lines.size(), 41u);
     const long k = (long)num(lines[40], "insertion");
     long created = 0, expect = 1;
-    for (size_t i = 0; i < lines.size(); ++i) {
+    for (size_t i = 0; i <= 40; ++i) {
         const std::string& l = lines[i];
-        if (l.find("\"event\": \"final\"") != std::string::npos || (long)num(l, "insertion") > k) continue;
-        if (i <= 40 && (l.find("\"domain_created\"") != std::string::npos || l.find("\"domain_split\"") != std::string::npos))
-            ++created;
+        if (l.find("\"domain_created\"") != std::string::npos || l.find("\"domain_split\"") != std::string::npos) ++created;
         if (l.find("\"domain_split\"") != std::string::npos) expect += (long)int_list(l, "faces").size() - 1;
         if (l.find("\"domain_merged\"") != std::string::npos) --expect;
+    }
+    // Event 40 is inside an insertion (a split, a relabel or a merge): the view says which source.
+    const bool inside = lines[40].find("\"domain_") != std::string::npos;
+    EXPECT_TRUE(inside) << lines[40];
+    if (inside) {
+        EXPECT_EQ((long)num(o.out, "inserting", at), (long)num(lines[40], "source"));
     }
     EXPECT_GT(created, 0);
     EXPECT_EQ(insertions, k);
@@ -657,11 +680,18 @@ TEST(Gui, ExportCaseReproducesTheTargetMaximum) {
 TEST(Gui, EventLogClickJumpsToTheStep) {
     REQUIRE_XVFB();
     fs::path dir = scratch_dir(), png = dir / "event_log_click.png";
-    // At 800x600 the log centres step 100 at y = 399; rows are 17 pixels apart.
-    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--event-log", "--click", "500,348"}, png, dir);
+    // Where the log shows step 100 (all kinds shown: one line per step); three lines up is step 97.
+    Outcome p = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--event-log"}, png, dir);
+    ASSERT_EQ(p.code, 0) << p.err;
+    const size_t at = p.out.find("\"event_log\"");
+    ASSERT_NE(at, std::string::npos) << p.out;
+    const double x = num(p.out, "current_x", at), y = num(p.out, "current_y", at), h = num(p.out, "row_h", at);
+    ASSERT_GT(y, 3 * h) << p.out;
+    const std::string click = std::to_string((int)x) + "," + std::to_string((int)std::lround(y - 3 * h));
+    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--event-log", "--click", click}, png, dir);
     ASSERT_EQ(o.code, 0) << o.err;
     EXPECT_EQ((long)num(o.out, "step"), 97);
-    Outcome k = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--event-log", "--click", "500,348", "--key",
+    Outcome k = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--event-log", "--click", click, "--key",
                          "right", "--key", "right"},
                         png, dir);
     ASSERT_EQ(k.code, 0) << k.err;
@@ -793,4 +823,266 @@ TEST(Gui, F1ShowsHelpButNotWhileTyping) {
     ASSERT_EQ(b.code, 0) << b.err;
     EXPECT_EQ(raw_value(b.out, "help"), "false");
     EXPECT_EQ((long)num(b.out, "target"), 22);
+}
+
+// ---- Layout, DPI, mouse in both views, play, hover, and the state inside an insertion
+
+// With the timeline open the window is tiled: the domain view left of the 3D view, the graph and
+// the event log in a strip under the 3D view, the timeline along the bottom. No two overlap, they
+// cover the area right of the sidebar, and the 3D view really renders into its tile.
+TEST(Gui, TiledLayoutKeepsEveryViewVisible) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "tiles.png";
+    for (const char* size : {"800x600", "1200x760"}) {
+        Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "300", "--graph", "--event-log"}, png, dir, {}, size);
+        ASSERT_EQ(o.code, 0) << o.err;
+        const int W = std::atoi(size), H = std::atoi(std::strchr(size, 'x') + 1);
+        const size_t at = o.out.find("\"tiles\"");
+        ASSERT_NE(at, std::string::npos) << o.out;
+        auto D = num_list(o.out, "domain", at), T = num_list(o.out, "timeline", at), G = num_list(o.out, "graph", at),
+             L = num_list(o.out, "log", at), V = num_list(o.out, "view", at);
+        ASSERT_EQ(D.size(), 4u);
+        ASSERT_EQ(T.size(), 4u);
+        ASSERT_EQ(G.size(), 4u);
+        ASSERT_EQ(L.size(), 4u);
+        ASSERT_EQ(V.size(), 4u);
+        const double sb = num(o.out, "sidebar"), font = num(o.out, "font_size");
+        // Domain | 3D view over graph | log, timeline below all of them.
+        EXPECT_NEAR(D[0], sb, 0.5);
+        EXPECT_NEAR(D[0] + D[2], V[0], 0.5);
+        EXPECT_NEAR(V[0] + V[2], W, 0.5);
+        EXPECT_NEAR(V[1] + V[3], G[1], 0.5);
+        EXPECT_NEAR(G[0], V[0], 0.5);
+        EXPECT_NEAR(G[0] + G[2], L[0], 0.5);
+        EXPECT_NEAR(L[0] + L[2], W, 0.5);
+        EXPECT_NEAR(G[1] + G[3], T[1], 0.5);
+        EXPECT_NEAR(D[1] + D[3], T[1], 0.5);
+        EXPECT_NEAR(T[0], sb, 0.5);
+        EXPECT_NEAR(T[1] + T[3], H, 0.5);
+        for (const auto* r : {&D, &T, &G, &L, &V}) {
+            EXPECT_GE((*r)[2], 6 * font) << size;
+            EXPECT_GE((*r)[3], 5 * font) << size;
+        }
+        // The 3D view's GL viewport is that tile (x, y from the top, w, h).
+        std::vector<int> vp = int_list(o.out, "viewport");
+        ASSERT_EQ(vp.size(), 4u);
+        EXPECT_NEAR(vp[0], V[0], 1);
+        EXPECT_NEAR(vp[1], V[1], 1);
+        EXPECT_NEAR(vp[2], V[2], 1);
+        EXPECT_NEAR(vp[3], V[3], 1);
+        // Its top-left corner shows the 3D view's clear colour, not a window.
+        Image im = load_png(png);
+        ASSERT_EQ(im.w, W);
+        const std::array<int, 3> clear{41, 43, 51};
+        EXPECT_GT(count(im, (int)V[0] + 2, (int)V[1] + 2, (int)V[0] + 12, (int)V[1] + 12,
+                        [&](std::array<int, 3> p) { return near(p, clear, 3); }),
+                  80);
+    }
+}
+
+// --layout-file: the width the user drags the domain view to is written to the layout file and
+// comes back on the next run (interactive runs use ~/.config/hlens/imgui.ini the same way).
+TEST(Gui, DraggedLayoutIsRememberedBetweenRuns) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "layout.png", ini = dir / "layout.ini";
+    const std::vector<std::string> base = {"--direction", "ba", "--target", "22", "--step", "300", "--layout-file", ini.string()};
+    Outcome first = run_gui(base, png, dir);
+    ASSERT_EQ(first.code, 0) << first.err;
+    auto D0 = num_list(first.out, "domain", first.out.find("\"tiles\""));
+    ASSERT_EQ(D0.size(), 4u);
+    // Drag the domain view's right edge 60 px to the right.
+    const int x = (int)(D0[0] + D0[2]) - 2, y = (int)(D0[1] + 0.5 * D0[3]);
+    std::vector<std::string> drag = base;
+    drag.insert(drag.end(), {"--drag", std::to_string(x) + "," + std::to_string(y) + "," + std::to_string(x + 60) + "," + std::to_string(y)});
+    Outcome dragged = run_gui(drag, png, dir);
+    ASSERT_EQ(dragged.code, 0) << dragged.err;
+    auto D1 = num_list(dragged.out, "domain", dragged.out.find("\"tiles\""));
+    ASSERT_EQ(D1.size(), 4u);
+    EXPECT_NEAR(D1[2], D0[2] + 60, 3);
+    const std::string text = read_file(ini);
+    EXPECT_NE(text.find("[Window][Domain view]"), std::string::npos) << text;
+    Outcome again = run_gui(base, png, dir);
+    ASSERT_EQ(again.code, 0) << again.err;
+    auto D2 = num_list(again.out, "domain", again.out.find("\"tiles\""));
+    ASSERT_EQ(D2.size(), 4u);
+    EXPECT_NEAR(D2[2], D1[2], 1);
+    // Without the file the default comes back.
+    Outcome fresh = run_gui({"--direction", "ba", "--target", "22", "--step", "300"}, png, dir);
+    auto D3 = num_list(fresh.out, "domain", fresh.out.find("\"tiles\""));
+    ASSERT_EQ(D3.size(), 4u);
+    EXPECT_NEAR(D3[2], D0[2], 1);
+}
+
+// A change of content scale while running (--dpi-scale: as when the window moves to another
+// screen) rebuilds the font at that scale, and every size, being a multiple of it, follows.
+TEST(Gui, ContentScaleChangeScalesFontAndLayout) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "dpi.png";
+    Outcome one = run_gui({"--direction", "ba", "--target", "22", "--step", "300"}, png, dir, {}, "1600x1200");
+    Outcome two = run_gui({"--direction", "ba", "--target", "22", "--step", "300", "--dpi-scale", "2"}, png, dir, {}, "1600x1200");
+    ASSERT_EQ(one.code, 0) << one.err;
+    ASSERT_EQ(two.code, 0) << two.err;
+    EXPECT_EQ(num(two.out, "font_size"), 2 * num(one.out, "font_size"));
+    EXPECT_NEAR(num(two.out, "sidebar"), 2 * num(one.out, "sidebar"), 1);
+    auto T1 = num_list(one.out, "timeline", one.out.find("\"tiles\"")), T2 = num_list(two.out, "timeline", two.out.find("\"tiles\""));
+    ASSERT_EQ(T1.size(), 4u);
+    ASSERT_EQ(T2.size(), 4u);
+    EXPECT_GT(T2[3], 1.5 * T1[3]);   // the timeline's rows are twice as tall
+}
+
+// The 3D view: the wheel zooms (the camera comes closer, it does not turn) and a right-drag pans
+// (the pivot moves, the camera does not turn). The domain view: the wheel zooms about the mouse
+// (every point moves away from it by the zoom factor) and a right-drag moves T' with the mouse.
+TEST(Gui, WheelZoomsAndRightDragPansBothViews) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "panzoom.png";
+    const std::vector<std::string> base = {"--direction", "ba", "--target", "22", "--step", "end"};
+    Outcome o = run_gui(base, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    auto V = num_list(o.out, "view", o.out.find("\"tiles\""));
+    ASSERT_EQ(V.size(), 4u);
+    const std::string in3d = std::to_string((int)(V[0] + 0.3 * V[2])) + "," + std::to_string((int)(V[1] + 0.7 * V[3]));
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> a = base;
+        a.insert(a.end(), extra.begin(), extra.end());
+        Outcome r = run_gui(a, png, dir);
+        EXPECT_EQ(r.code, 0) << r.err;
+        return r;
+    };
+    Outcome zoomed = with({"--wheel", in3d + ",3"});
+    EXPECT_LT(num(zoomed.out, "distance"), 0.8 * num(o.out, "distance"));
+    EXPECT_EQ(num(zoomed.out, "yaw"), num(o.out, "yaw"));
+    EXPECT_EQ(num(zoomed.out, "pitch"), num(o.out, "pitch"));
+    const int x0 = (int)(V[0] + 0.3 * V[2]), y0 = (int)(V[1] + 0.7 * V[3]);
+    Outcome panned = with({"--right-drag", std::to_string(x0) + "," + std::to_string(y0) + "," + std::to_string(x0 + 40) + "," + std::to_string(y0)});
+    EXPECT_EQ(num(panned.out, "yaw"), num(o.out, "yaw"));
+    EXPECT_EQ(num(panned.out, "distance"), num(o.out, "distance"));
+    auto p0 = num_list(o.out, "pivot"), p1 = num_list(panned.out, "pivot");
+    ASSERT_EQ(p0.size(), 3u);
+    ASSERT_EQ(p1.size(), 3u);
+    EXPECT_GT(std::fabs(p1[0] - p0[0]) + std::fabs(p1[1] - p0[1]) + std::fabs(p1[2] - p0[2]), 1e-3);
+
+    // Domain view: zoom 2 wheel steps about a point inside T'.
+    auto c = num_list(o.out, "corners_on_screen");
+    ASSERT_EQ(c.size(), 6u);
+    EXPECT_EQ(num(o.out, "domain_zoom"), 1);
+    const double mx = std::round((c[0] + c[2] + c[4]) / 3), my = std::round((c[1] + c[3] + c[5]) / 3);
+    Outcome dz = with({"--wheel", std::to_string((int)mx) + "," + std::to_string((int)my) + ",2"});
+    auto cz = num_list(dz.out, "corners_on_screen");
+    ASSERT_EQ(cz.size(), 6u);
+    const double f = num(dz.out, "domain_zoom");
+    EXPECT_GT(f, 1.2);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(cz[2 * k], mx + f * (c[2 * k] - mx), 1.0);
+        EXPECT_NEAR(cz[2 * k + 1], my + f * (c[2 * k + 1] - my), 1.0);
+    }
+    Outcome dp = with({"--right-drag", std::to_string((int)mx) + "," + std::to_string((int)my) + "," + std::to_string((int)mx + 50) + "," +
+                                           std::to_string((int)my + 20)});
+    auto cp = num_list(dp.out, "corners_on_screen");
+    ASSERT_EQ(cp.size(), 6u);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(cp[2 * k], c[2 * k] + 50, 1.0);
+        EXPECT_NEAR(cp[2 * k + 1], c[2 * k + 1] + 20, 1.0);
+    }
+}
+
+// Space plays the timeline at the chosen speed (10 events a second; a headless frame is 1/60 s),
+// and without it the step stays put.
+TEST(Gui, PlayAdvancesTheTimeline) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "play.png";
+    Outcome still = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--wait", "60"}, png, dir);
+    ASSERT_EQ(still.code, 0) << still.err;
+    EXPECT_EQ((long)num(still.out, "step"), 100);
+    EXPECT_EQ(raw_value(still.out, "playing"), "false");
+    Outcome play = run_gui({"--direction", "ba", "--target", "22", "--step", "100", "--key", "space", "--wait", "60"}, png, dir);
+    ASSERT_EQ(play.code, 0) << play.err;
+    EXPECT_EQ(raw_value(play.out, "playing"), "true");
+    const long step = (long)num(play.out, "step");
+    EXPECT_GE(step, 108);   // 60 frames at 10 events/s: 10 events, plus the frames before the picture
+    EXPECT_LE(step, 115);
+}
+
+// Hovering the domain view names what is under the mouse: inside a domain, the domain the
+// solver has there (run independently here); on the middle of an edge of T', an arc of the
+// target's boundary.
+TEST(Gui, HoverNamesTheDomainAndTheArc) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "hover.png";
+    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "end"}, png, dir, {}, "1400x900");
+    ASSERT_EQ(o.code, 0) << o.err;
+    auto c = num_list(o.out, "corners_on_screen");
+    ASSERT_EQ(c.size(), 6u);
+
+    hlens::TriangleMesh A = hlens::load_mesh(kDemoA), B = hlens::load_mesh(kDemoB);
+    hlens::VoxelGrid grid(A, B);
+    hlens::TargetSolver ts(grid, 1, 22);
+    ts.run();
+    const auto& fr = ts.frame();
+    const hlens::DomainMesh& dm = *ts.domain_mesh();
+    // Frame -> screen: the similarity taking the corners of T' to where the view drew them.
+    const double scale = std::hypot(c[2] - c[0], c[3] - c[1]) / hlens::norm(fr.corners[1] - fr.corners[0]);
+    auto screen = [&](hlens::Vec2 p) {
+        hlens::Vec2 d = p - fr.corners[0];
+        return std::array<double, 2>{c[0] + d.x * scale, c[1] - d.y * scale};
+    };
+    // A point of T' whose domain reaches 10 px around it (away from every arc).
+    hlens::Vec2 pick;
+    int face = -1;
+    const double r = 6 / scale;
+    for (int i = 1; i < 12 && face < 0; ++i)
+        for (int j = 1; i + j < 12 && face < 0; ++j) {
+            hlens::Vec2 p = fr.corners[0] + (fr.corners[1] - fr.corners[0]) * (i / 12.0) + (fr.corners[2] - fr.corners[0]) * (j / 12.0);
+            const int f = dm.face_at(p);
+            bool clear = f >= 0;
+            for (int k = 0; k < 16 && clear; ++k) {
+                const double a = k * 3.14159265358979 / 8;
+                clear = dm.face_at(p + hlens::Vec2(r * std::cos(a), r * std::sin(a))) == f;
+            }
+            if (clear) pick = p, face = f;
+        }
+    ASSERT_GE(face, 0);
+    auto q = screen(pick);
+    Outcome hov = run_gui({"--direction", "ba", "--target", "22", "--step", "end", "--hover",
+                           std::to_string((int)std::lround(q[0])) + "," + std::to_string((int)std::lround(q[1]))},
+                          png, dir, {}, "1400x900");
+    ASSERT_EQ(hov.code, 0) << hov.err;
+    const size_t h = hov.out.find("\"hover\"");
+    ASSERT_NE(h, std::string::npos) << hov.out;
+    EXPECT_EQ((long)num(hov.out, "source", h), (long)dm.faces()[face].label.source) << hov.out.substr(h, 80);
+    EXPECT_EQ(raw_value(hov.out, "region", h), "\"" + std::string(hlens::region_name(dm.faces()[face].label.region)) + "\"");
+
+    const double ex = 0.5 * (c[0] + c[2]), ey = 0.5 * (c[1] + c[3]);
+    Outcome arc = run_gui({"--direction", "ba", "--target", "22", "--step", "end", "--hover",
+                           std::to_string((int)std::lround(ex)) + "," + std::to_string((int)std::lround(ey))},
+                          png, dir, {}, "1400x900");
+    ASSERT_EQ(arc.code, 0) << arc.err;
+    const size_t ha = arc.out.find("\"hover\"");
+    ASSERT_NE(ha, std::string::npos) << arc.out;
+    EXPECT_EQ(raw_value(arc.out, "kind", ha), "\"target boundary\"");
+}
+
+// Inside an insertion the domain view shows the mesh as it is at that event, and the independent
+// overlay still agrees with it: domains the source has taken against all sources, the others
+// against the sources before it. Stepping back into an insertion gives the same state again.
+TEST(Gui, StateInsideAnInsertionAgreesWithTheOverlay) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "inside.png";
+    for (const char* step : {"1490", "1500", "40"}) {
+        Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", step, "--overlay"}, png, dir);
+        ASSERT_EQ(o.code, 0) << o.err;
+        const size_t at = o.out.find("\"step_state\"");
+        EXPECT_GE((long)num(o.out, "inserting", at), 0) << step;
+        const size_t ov = o.out.find("\"overlay\": {");
+        ASSERT_NE(ov, std::string::npos) << o.out;
+        EXPECT_GT((long)num(o.out, "samples", ov), 1000);
+        EXPECT_EQ((long)num(o.out, "disagree", ov), 0) << step;
+    }
+    Outcome at40 = run_gui({"--direction", "ba", "--target", "22", "--step", "40"}, png, dir);
+    Outcome back = run_gui({"--direction", "ba", "--target", "22", "--step", "41", "--key", "left"}, png, dir);
+    ASSERT_EQ(at40.code, 0) << at40.err;
+    ASSERT_EQ(back.code, 0) << back.err;
+    EXPECT_EQ((long)num(back.out, "step"), 40);
+    for (const char* k : {"domains", "arcs", "vertices", "insertions", "inserting"})
+        EXPECT_EQ(num(back.out, k, back.out.find("\"step_state\"")), num(at40.out, k, at40.out.find("\"step_state\""))) << k;
 }

@@ -92,8 +92,23 @@ struct AppState {
     bool help_open = false;       // the Help window (F1)
     Stepper stepper;              // the timeline and the domain view of the selected target
 
-    ViewRect view;
+    ViewRect view;                // the 3D view
     float sidebar_width = 0;
+    // Tiled layout (layout()): with a target's timeline open, the area right of the sidebar is
+    // split into the domain view (left), the 3D view (right, above a strip holding the graph and
+    // the event log when they are open) and the timeline (bottom). The user drags the free edge of
+    // each tile; the chosen sizes live here and, through the windows' sizes, in imgui.ini.
+    struct Tile {
+        ViewRect r;
+        float lo_w = 0, hi_w = 0, lo_h = 0, hi_h = 0;   // the sizes the user may drag it to
+    };
+    struct Tiles {
+        bool on = false;
+        Tile domain, timeline, graph, log;
+        bool graph_on = false, log_on = false;
+        float domain_w = 0, strip_h = 0, graph_w = 0;   // chosen sizes (0: the default)
+        float timeline_need = 0;                        // the height the timeline's contents took
+    } tiles;
     Requests req;
 };
 

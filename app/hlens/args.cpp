@@ -30,9 +30,14 @@ const char* usage_text() {
            "  --screenshot PATH   headless: wait for the computation, render, write a PNG, print the\n"
            "                      state as one JSON line on stdout and exit (0; 2 on bad input)\n"
            "\n"
-           "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --key home|f1|f12|left|right|space\n"
+           "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --right-drag X0,Y0,X1,Y1,\n"
+           "  --wheel X,Y,STEPS, --hover X,Y, --wait FRAMES, --key home|f1|f12|left|right|space\n"
            "                      with --screenshot: input played in order once the computation\n"
-           "                      is done (window pixels from the top-left)\n"
+           "                      is done (window pixels from the top-left; a frame is 1/60 s)\n"
+           "  --layout-file PATH  keep the window layout in PATH (interactive runs use\n"
+           "                      ~/.config/hlens/imgui.ini; headless runs none unless given)\n"
+           "  --dpi-scale S       act as if the window moved to a screen of content scale S\n"
+           "                      (fonts and sizes follow, as when it really happens)\n"
            "\n"
            "Mouse: left-drag orbits, right- or shift+left-drag pans, the wheel zooms, a click picks a\n"
            "target, a double-click recentres. Keys: Home resets the camera, F12 saves a PNG, F1 shows\n"
@@ -130,16 +135,31 @@ Options parse_args(const std::vector<std::string>& args) {
             else if (v == "space") k.key = GLFW_KEY_SPACE;
             else throw UsageError("--key expects home, f1, f12, left, right or space, got '" + v + "'");
             o.input.push_back(k);
-        } else if (a == "--drag") {
+        } else if (a == "--drag" || a == "--right-drag") {
             auto v = parse_floats(value(), 4, a);
-            o.input.push_back({InputAction::Drag, v[0], v[1], v[2], v[3]});
+            o.input.push_back({a == "--drag" ? InputAction::Drag : InputAction::RightDrag, v[0], v[1], v[2], v[3]});
+        } else if (a == "--wheel") {
+            auto v = parse_floats(value(), 3, a);
+            o.input.push_back({InputAction::Wheel, v[0], v[1], v[2], 0});
+        } else if (a == "--hover") {
+            auto v = parse_floats(value(), 2, a);
+            o.input.push_back({InputAction::Hover, v[0], v[1], 40, 0});
+        } else if (a == "--wait") {
+            o.input.push_back({InputAction::Wait, 0, 0, (float)parse_long(value(), a), 0});
+        } else if (a == "--layout-file") {
+            o.layout_file = value();
+        } else if (a == "--dpi-scale") {
+            auto v = parse_floats(value(), 1, a);
+            if (!(v[0] >= 0.5f && v[0] <= 4)) throw UsageError("--dpi-scale expects a number in 0.5..4");
+            o.dpi_scale = v[0];
         } else if (a.size() > 1 && a[0] == '-') {
             throw UsageError("unknown option " + a);
         } else {
             positional.push_back(a);
         }
     }
-    if (!o.input.empty() && o.screenshot.empty()) throw UsageError("--click, --double-click, --drag and --key need --screenshot");
+    if (!o.input.empty() && o.screenshot.empty())
+        throw UsageError("--click, --double-click, --drag, --right-drag, --wheel, --hover, --wait and --key need --screenshot");
     if (o.step >= 0 && o.target < 0) throw UsageError("--step needs --target");
     if (o.epsilon_given && o.case_name.empty()) throw UsageError("--epsilon needs --case");
     if (!o.export_dir.empty() && (o.screenshot.empty() || o.target < 0)) throw UsageError("--export-case needs --screenshot and --target");

@@ -1,6 +1,8 @@
 // Command line of hlens:  hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]
 //                         [--step N|end] [--event-log] [--case NAME [--epsilon E]] [--export-case DIR]
-//                         [--click X,Y] [--double-click X,Y] [--drag X0,Y0,X1,Y1] [--key home|f12|left|right|space]
+//                         [--click X,Y] [--double-click X,Y] [--drag X0,Y0,X1,Y1] [--right-drag X0,Y0,X1,Y1]
+//                         [--wheel X,Y,STEPS] [--hover X,Y] [--wait FRAMES] [--key home|f12|left|right|space]
+//                         [--layout-file PATH] [--dpi-scale S]
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -15,8 +17,8 @@ struct UsageError : std::runtime_error {
 // Scripted mouse input for headless runs, in window coordinates (the screenshot's pixels at 1x):
 // played frame by frame through Dear ImGui's input state, as real mouse events would be.
 struct InputAction {
-    enum Kind { Click, DoubleClick, Drag, Key } kind = Click;
-    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    enum Kind { Click, DoubleClick, Drag, RightDrag, Key, Wheel, Hover, Wait } kind = Click;
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;   // Wheel: x1 = steps (up > 0); Hover, Wait: x1 = frames
     int key = 0;   // Key: a GLFW key code
 };
 
@@ -37,6 +39,8 @@ struct Options {
     std::string export_dir;      // --export-case DIR: headless, export the selected target there      // --event-log: open the event log with the timeline
     bool overlay = false;        // --overlay: with --step, the nearest-feature overlay in the domain view
     bool graph = false;          // --graph: with --step, open the graph of d^2
+    std::string layout_file;     // --layout-file PATH: keep the window layout there (also headless)
+    float dpi_scale = 0;         // --dpi-scale S: act as if the window's content scale became S
     bool help = false;
 };
 

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "app_state.h"
+#include "panels.h"
 #include "stepper.h"
 
 namespace hlens::gui {
@@ -25,18 +26,15 @@ void draw_event_log(AppState& s) {
     const TargetSolver* full = s.trace[d] && s.trace[d]->target == (uint32_t)st.target && s.trace[d]->solver
                                    ? s.trace[d]->solver.get()
                                    : nullptr;
-    const ViewRect& v = s.view;
-    const float w = 30 * em(), tl_h = 9.5f * em();
-    ImGui::SetNextWindowPos(ImVec2(v.x + v.w - w - 0.5f * em(), v.y + v.h * 0.42f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(w, std::max(10 * em(), v.h * 0.58f - tl_h)), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.95f);
+    place_tile(s.tiles.log);
     bool open = true;
-    if (!ImGui::Begin("Event log", &open)) {
+    if (!ImGui::Begin("Event log", &open, kTileFlags)) {
         ImGui::End();
         st.event_log = open;
         return;
     }
     st.event_log = open;
+    if (!s.tiles.graph_on) s.tiles.strip_h = ImGui::GetWindowSize().y;   // the strip's top edge is the log's
     if (!full) {
         ImGui::TextDisabled(s.trace_running ? "tracing the target..." : "no event stream");
         ImGui::End();
@@ -90,6 +88,8 @@ void draw_event_log(AppState& s) {
         }
     }
     long jump_to = -2;
+    st.log_current_y = -1;
+    st.log_row_h = line_h;
     ImGuiListClipper clipper;
     clipper.Begin((int)st.log_rows.size(), line_h);
     char line[320];
@@ -98,6 +98,10 @@ void draw_event_log(AppState& s) {
             const Event& e = ev[st.log_rows[r]];
             std::snprintf(line, sizeof line, "%5ld  %-20s %s##%ld", e.step, event_name(e.kind), event_summary(e).c_str(), e.step);
             if (ImGui::Selectable(line, e.step == st.step)) jump_to = e.step;
+            if (e.step == st.step) {   // where the current line is, for the headless JSON line
+                st.log_current_y = 0.5f * (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y);
+                st.log_row_x = ImGui::GetItemRectMin().x + 2 * em();
+            }
         }
     clipper.End();
     ImGui::EndChild();

@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "app_state.h"
+#include "panels.h"
 #include "gl.h"
 #include "shader.h"
 
@@ -90,8 +91,8 @@ void ensure_target(int w, int h) {
 void build(Stepper& st) {
     const TargetSolver& ts = *st.solver;
     const TargetFrame& fr = ts.frame();
-    const DomainMesh* mesh = ts.domain_mesh();
-    const bool any = !ts.inserted_sources().empty();
+    const DomainMesh* mesh = st.mesh();   // the state at the current step
+    const bool any = st.insertions() > 0;
     const double s2 = fr.scale * fr.scale;
     const Vec2 c0 = fr.corners[0], c1 = fr.corners[1], c2 = fr.corners[2];
     Box2 box;
@@ -108,7 +109,7 @@ void build(Stepper& st) {
     for (int i = 0; i <= N; ++i)
         for (int j = 0; i + j <= N; ++j) {
             Vec2 p = c0 + (c1 - c0) * (double(i) / N) + (c2 - c0) * (double(j) / N);
-            double d = any ? ts.direct_d2(p) : 0.0;
+            double d = any ? st.d2_at(p) : 0.0;
             pt.push_back(p);
             z.push_back(d);
             if (std::isfinite(d)) zmax = std::max(zmax, d), zmin = std::min(zmin, d);
@@ -116,7 +117,8 @@ void build(Stepper& st) {
     st.graph_samples = (long)pt.size();
     st.graph_grid_max = any ? zmax * s2 : NAN;
     double zmark = NAN;
-    if (any && std::isfinite(ts.max_sq())) zmark = ts.direct_d2(ts.max_point_2d());
+    // (inside an insertion the running maximum belongs to the previous state: not marked)
+    if (any && std::isfinite(st.max_sq()) && st.inserting() < 0) zmark = st.d2_at(st.max_2d());
     st.graph_z_min = any && std::isfinite(zmin) ? zmin * s2 : NAN;
     st.graph_z_max = any ? std::max(zmax, std::isfinite(zmark) ? zmark : 0.0) * s2 : NAN;
     const double ztop = std::max({zmax, std::isfinite(zmark) ? zmark : 0.0});
@@ -167,7 +169,7 @@ void build(Stepper& st) {
                 for (int q = 0; q < n; ++q) {
                     Vec2 p = a.pts[k] + (a.pts[k + 1] - a.pts[k]) * (double(q) / n);
                     Vec2 r = a.pts[k] + (a.pts[k + 1] - a.pts[k]) * (double(q + 1) / n);
-                    Vertex va = vert(p, ts.direct_d2(p), col), vb = vert(r, ts.direct_d2(r), col);
+                    Vertex va = vert(p, st.d2_at(p), col), vb = vert(r, st.d2_at(r), col);
                     va.p[2] += lift, vb.p[2] += lift;
                     line(va, vb);
                 }
@@ -175,7 +177,7 @@ void build(Stepper& st) {
         }
     for (int k = 0; k < 3; ++k) line(vert(fr.corners[k], zlo, white), vert(fr.corners[(k + 1) % 3], zlo, white));
     if (std::isfinite(zmark)) {
-        Vec2 m = ts.max_point_2d();
+        Vec2 m = st.max_2d();
         Vertex top = vert(m, zmark, red), base = vert(m, zlo, red);
         line(base, top);
         const float r = 0.03f;
@@ -235,17 +237,16 @@ void draw_graph_view(AppState& s) {
     Stepper& st = s.stepper;
     if (!st.open || !st.graph_open || !st.active()) return;
     const float em = ImGui::GetFontSize();
-    const ViewRect& v = s.view;
-    ImGui::SetNextWindowPos(ImVec2(v.x + v.w - 0.5f * em, v.y + 0.5f * em), ImGuiCond_FirstUseEver, ImVec2(1, 0));
-    ImGui::SetNextWindowSize(ImVec2(std::min(v.w - em, 30 * em), std::min(v.h - 10 * em, 26 * em)), ImGuiCond_FirstUseEver);
+    place_tile(s.tiles.graph);
     bool open = true;
-    if (!ImGui::Begin("Graph of d^2", &open, ImGuiWindowFlags_NoScrollbar |
-                                                 ImGuiWindowFlags_NoScrollWithMouse)) {
+    if (!ImGui::Begin("Graph of d^2", &open, kTileFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
         ImGui::End();
         st.graph_open = open;
         return;
     }
     st.graph_open = open;
+    s.tiles.strip_h = ImGui::GetWindowSize().y;                          // the strip's top edge
+    if (s.tiles.log_on) s.tiles.graph_w = ImGui::GetWindowSize().x;      // and the edge it shares with the log
     if (!init_gl()) {
         ImGui::TextWrapped("graph view unavailable: %s", g.error.c_str());
         ImGui::End();

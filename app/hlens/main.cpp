@@ -58,6 +58,31 @@ void on_drop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
 }
 
+// The window moved to a screen with another content scale (GLFW calls this from glfwPollEvents).
+float g_content_scale = 0;   // 0: no change pending
+void on_content_scale(GLFWwindow*, float sx, float) { g_content_scale = std::max(1.0f, sx); }
+
+// Fonts and sizes for a content scale: everything else is sized in multiples of the font size.
+// Called before the first frame and between frames when the scale changes (rebuilding the font
+// atlas and its texture, and the style from scratch so sizes are not scaled twice).
+void apply_dpi_scale(float scale, bool rebuild_texture) {
+    ImGuiIO& io = ImGui::GetIO();
+    ImGuiStyle style;
+    ImGui::StyleColorsDark(&style);
+    style.WindowRounding = 0;
+    style.Colors[ImGuiCol_WindowBg].w = 1.0f;
+    style.ScaleAllSizes(scale);
+    ImGui::GetStyle() = style;
+    io.Fonts->Clear();
+    ImFontConfig font;
+    font.SizePixels = std::round(13.0f * scale);
+    io.Fonts->AddFontDefault(&font);
+    if (rebuild_texture) {
+        ImGui_ImplOpenGL3_DestroyFontsTexture();
+        ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
+}
+
 void glfw_error(int code, const char* what) { std::fprintf(stderr, "hlens: GLFW error %d: %s\n", code, what); }
 
 // Settings of interactive runs live in ~/.config/hlens/ (never the current directory).
@@ -99,7 +124,7 @@ std::string json_number(double v) {
 }
 
 // The state behind a headless picture, one JSON line.
-std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h, int vx, int vw) {
+std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h, const int vp[4]) {
     const int d = s.direction;
     const long t = s.selected[d];
     const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
@@ -120,25 +145,40 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
     j += ", \"b_to_a\": " + (s.computed ? json_number(s.result.b_to_a.distance) : "null");
     j += ", \"hausdorff\": " + (s.computed ? json_number(s.result.hausdorff) : "null");
     j += ", \"camera\": {\"yaw\": " + json_number(cam.yaw) + ", \"pitch\": " + json_number(cam.pitch) +
-         ", \"distance\": " + json_number(cam.distance) + "}";
+         ", \"distance\": " + json_number(cam.distance) + ", \"pivot\": [" + json_number(cam.pivot.x) + ", " +
+         json_number(cam.pivot.y) + ", " + json_number(cam.pivot.z) + "]}";
     j += ", \"size\": [" + std::to_string(fb_w) + ", " + std::to_string(fb_h) + "]";
-    j += ", \"viewport\": [" + std::to_string(vx) + ", 0, " + std::to_string(vw) + ", " + std::to_string(fb_h) + "]";
+    // The 3D view: x, y from the top, width, height (framebuffer pixels).
+    j += ", \"viewport\": [" + std::to_string(vp[0]) + ", " + std::to_string(fb_h - vp[1] - vp[3]) + ", " +
+         std::to_string(vp[2]) + ", " + std::to_string(vp[3]) + "]";
     if (s.case_loaded) j += ", \"case\": \"" + s.case_name + "\", \"epsilon\": " + json_number(s.case_eps);
     if (s.export_ok) j += ", \"exported\": true";
     j += ", \"help\": " + std::string(s.help_open ? "true" : "false");
+    j += ", \"font_size\": " + json_number(ImGui::GetFontSize()) + ", \"sidebar\": " + json_number(s.sidebar_width);
+    if (s.tiles.on) {   // the tiled layout (window coordinates): x, y, w, h
+        auto rect = [](const ViewRect& r) {
+            return "[" + json_number(r.x) + ", " + json_number(r.y) + ", " + json_number(r.w) + ", " + json_number(r.h) + "]";
+        };
+        j += ", \"tiles\": {\"domain\": " + rect(s.tiles.domain.r) + ", \"timeline\": " + rect(s.tiles.timeline.r);
+        if (s.tiles.graph_on) j += ", \"graph\": " + rect(s.tiles.graph.r);
+        if (s.tiles.log_on) j += ", \"log\": " + rect(s.tiles.log.r);
+        j += ", \"view\": " + rect(s.view) + "}";
+    }
     const Stepper& st = s.stepper;
     if (st.open && st.active()) {   // the timeline's state: "step" is the current event (-1: none yet)
         const TargetSolver& ts = *st.solver;
         j += ", \"step\": " + std::to_string(st.step);
         j += ", \"step_finished\": " + std::string(st.at_end ? "true" : "false");
         j += ", \"step_event\": " + (st.current ? "\"" + std::string(event_name(st.current->kind)) + "\"" : std::string("null"));
-        j += ", \"step_state\": {\"insertions\": " + std::to_string(ts.insertions()) +
+        j += ", \"step_state\": {\"insertions\": " + std::to_string(st.insertions()) +
              ", \"domains\": " + std::to_string(st.live_domains) + ", \"arcs\": " + std::to_string(st.live_arcs) +
              ", \"vertices\": " + std::to_string(st.live_vertices) +
-             ", \"max\": " + json_number(std::sqrt(ts.max_sq())) +
-             ", \"search_radius\": " + json_number(ts.search_radius()) +
-             ", \"highlighted\": " + std::to_string(ts.inserted_sources().size()) +
+             ", \"max\": " + json_number(std::sqrt(st.max_sq())) +
+             ", \"search_radius\": " + json_number(st.search_radius()) +
+             ", \"highlighted\": " + std::to_string(std::min<size_t>(ts.inserted_sources().size(), st.insertions())) +
+             ", \"inserting\": " + std::to_string(st.inserting()) +
              ", \"radius_plot\": " + std::to_string(st.radius_plot.size()) + "}";
+        j += ", \"playing\": " + std::string(st.playing ? "true" : "false");
         j += ", \"voxels\": {\"visited\": " + std::to_string(st.vox_visited) + ", \"pending\": " +
              std::to_string(st.vox_pending) + ", \"culled\": " + std::to_string(st.vox_culled) + "}";
         const float fx = fb_w / std::max(1.0f, s.view.x + s.view.w), fy = 1.0f;   // window -> framebuffer
@@ -146,6 +186,20 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
         j += ", \"domain_view\": [" + std::to_string((int)std::lround(st.view_rect[0] * fx)) + ", " +
              std::to_string((int)std::lround(st.view_rect[1] * fx)) + ", " + std::to_string((int)std::lround(st.view_rect[2] * fx)) +
              ", " + std::to_string((int)std::lround(st.view_rect[3] * fx)) + "]";
+        j += ", \"domain_zoom\": " + json_number(st.zoom) + ", \"domain_pan\": [" + json_number(st.pan_x) + ", " +
+             json_number(st.pan_y) + "], \"corners_on_screen\": [";
+        for (int k = 0; k < 3; ++k)
+            j += std::string(k ? ", " : "") + json_number(st.corner_screen[k][0]) + ", " + json_number(st.corner_screen[k][1]);
+        j += "]";
+        if (const DomainMesh* m = st.mesh()) {
+            if (st.hover_arc >= 0 && (size_t)st.hover_arc < m->edges().size())
+                j += ", \"hover\": {\"arc\": " + std::to_string(st.hover_arc) + ", \"kind\": \"" +
+                     arc_kind_name(m->edges()[st.hover_arc].kind) + "\"}";
+            else if (st.hover_face >= 0 && (size_t)st.hover_face < m->faces().size())
+                j += ", \"hover\": {\"face\": " + std::to_string(st.hover_face) + ", \"source\": " +
+                     std::to_string(m->faces()[st.hover_face].label.source) + ", \"region\": \"" +
+                     region_name(m->faces()[st.hover_face].label.region) + "\"}";
+        }
         if (st.show_overlay && st.overlay_revision == st.revision)
             j += ", \"overlay\": {\"samples\": " + std::to_string(st.overlay_samples) + ", \"disagree\": " +
                  std::to_string(st.overlay_disagree) + ", \"ignored\": " + std::to_string(st.overlay_ignored) +
@@ -153,13 +207,15 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
                  ", \"gpu\": " + (st.overlay_gpu ? "true" : "false") + "}";
         if (st.graph_open && st.graph_revision != 0)
             j += ", \"graph\": {\"samples\": " + std::to_string(st.graph_samples) + ", \"z_max\": " + json_number(st.graph_z_max) +
-                 ", \"grid_max\": " + json_number(st.graph_grid_max) + ", \"max_sq\": " + json_number(st.solver->max_sq()) +
+                 ", \"grid_max\": " + json_number(st.graph_grid_max) + ", \"max_sq\": " + json_number(st.max_sq()) +
                  ", \"yaw\": " + json_number(st.graph_yaw) + ", \"pitch\": " + json_number(st.graph_pitch) +
                  ", \"zoom\": " + json_number(st.graph_zoom) + ", \"rect\": [" + std::to_string((int)st.graph_rect[0]) + ", " +
                  std::to_string((int)st.graph_rect[1]) + ", " + std::to_string((int)st.graph_rect[2]) + ", " +
                  std::to_string((int)st.graph_rect[3]) + "]}";
         if (st.event_log)
-            j += ", \"event_log\": {\"shown\": " + std::to_string(st.log_shown) + ", \"total\": " + std::to_string(st.log_total) + "}";
+            j += ", \"event_log\": {\"shown\": " + std::to_string(st.log_shown) + ", \"total\": " + std::to_string(st.log_total) +
+                 ", \"current_x\": " + json_number(st.log_row_x) + ", \"current_y\": " + json_number(st.log_current_y) +
+                 ", \"row_h\": " + json_number(st.log_row_h) + "}";
     } else {
         j += ", \"step\": null";
     }
@@ -171,7 +227,9 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
 struct MouseFrame {
     float x, y;
     bool down;
-    int key = -1;   // a GLFW key held down during this frame
+    int key = -1;        // a GLFW key held down during this frame
+    bool right = false;  // the right button is down
+    float wheel = 0;     // wheel steps this frame
 };
 std::vector<MouseFrame> script_frames(const std::vector<InputAction>& actions) {
     std::vector<MouseFrame> f;
@@ -183,12 +241,30 @@ std::vector<MouseFrame> script_frames(const std::vector<InputAction>& actions) {
             f.push_back(k);
             k.key = -1;
             f.push_back(k);
-        } else if (a.kind == InputAction::Drag) {
+        } else if (a.kind == InputAction::Drag || a.kind == InputAction::RightDrag) {
+            const bool left = a.kind == InputAction::Drag;
+            auto at = [&](float x, float y, bool down) {
+                MouseFrame m{x, y, left && down};
+                m.right = !left && down;
+                return m;
+            };
+            f.push_back(at(a.x0, a.y0, false));
+            f.push_back(at(a.x0, a.y0, true));
+            for (int i = 1; i <= 8; ++i) f.push_back(at(a.x0 + (a.x1 - a.x0) * i / 8, a.y0 + (a.y1 - a.y0) * i / 8, true));
+            f.push_back(at(a.x1, a.y1, false));
+        } else if (a.kind == InputAction::Wheel) {
             f.push_back({a.x0, a.y0, false});
-            f.push_back({a.x0, a.y0, true});
-            for (int i = 1; i <= 8; ++i)
-                f.push_back({a.x0 + (a.x1 - a.x0) * i / 8, a.y0 + (a.y1 - a.y0) * i / 8, true});
-            f.push_back({a.x1, a.y1, false});
+            MouseFrame w{a.x0, a.y0, false};
+            w.wheel = a.x1;
+            f.push_back(w);
+        } else if (a.kind == InputAction::Hover || a.kind == InputAction::Wait) {
+            MouseFrame m = a.kind == InputAction::Hover ? MouseFrame{a.x0, a.y0, false}
+                                                        : (f.empty() ? MouseFrame{-1, -1, false} : f.back());
+            m.down = m.right = false;
+            m.key = -1;
+            m.wheel = 0;
+            for (int i = 0; i < (int)a.x1; ++i) f.push_back(m);
+            continue;
         } else {
             f.push_back({a.x0, a.y0, false});
             for (int k = 0; k < (a.kind == InputAction::DoubleClick ? 2 : 1); ++k) {
@@ -196,7 +272,9 @@ std::vector<MouseFrame> script_frames(const std::vector<InputAction>& actions) {
                 f.push_back({a.x0, a.y0, false});
             }
         }
-        f.push_back(f.back());
+        MouseFrame rest = f.back();
+        rest.wheel = 0;
+        f.push_back(rest);
     }
     return f;
 }
@@ -325,7 +403,7 @@ int main(int argc, char** argv) {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     static std::string ini;   // must outlive the context
-    ini = s.headless ? "" : config_file("imgui.ini");
+    ini = !opt.layout_file.empty() ? opt.layout_file : s.headless ? "" : config_file("imgui.ini");
     io.IniFilename = ini.empty() ? nullptr : ini.c_str();
     float dpi = 1.0f;
     if (!s.headless) {
@@ -333,16 +411,11 @@ int main(int argc, char** argv) {
         glfwGetWindowContentScale(window, &sx, &sy);
         dpi = std::max(1.0f, sx);
     }
-    ImGui::StyleColorsDark();
-    ImGuiStyle& style = ImGui::GetStyle();
-    style.WindowRounding = 0;
-    style.Colors[ImGuiCol_WindowBg].w = 1.0f;
-    style.ScaleAllSizes(dpi);
-    ImFontConfig font;
-    font.SizePixels = std::round(13.0f * dpi);
-    io.Fonts->AddFontDefault(&font);
+    apply_dpi_scale(dpi, false);
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
+    glfwSetWindowContentScaleCallback(window, on_content_scale);
+    long frame = 0;
 
     // ---- 3. Renderer, picking, background jobs
     // (unique_ptr: both hold GL objects, so they are released before the context is destroyed)
@@ -381,6 +454,15 @@ int main(int argc, char** argv) {
         else
             glfwWaitEventsTimeout(0.25);
         if (s.headless && busy) std::this_thread::sleep_for(std::chrono::milliseconds(10));   // leave the cores to the job
+        // A new content scale (the window moved to another screen; --dpi-scale from frame 3 on).
+        if (opt.dpi_scale > 0 && frame == 3) g_content_scale = opt.dpi_scale;
+        if (g_content_scale > 0 && g_content_scale != dpi) {
+            dpi = g_content_scale;
+            apply_dpi_scale(dpi, true);
+            redraw = 3;
+        }
+        g_content_scale = 0;
+        ++frame;
 
         // ---- 2. Harvest background jobs
         if (auto sc = compute.take_scene()) {
@@ -478,15 +560,26 @@ int main(int argc, char** argv) {
             io.MousePos = f.x < 0 ? ImVec2(-FLT_MAX, -FLT_MAX) : ImVec2(f.x, f.y);
             for (bool& b : io.MouseDown) b = false;
             io.MouseDown[0] = f.down;
+            io.MouseDown[1] = f.right;
+            io.MouseWheel = f.wheel;
             for (bool& k : io.KeysDown) k = false;
             if (f.key >= 0) io.KeysDown[f.key] = true;
+        } else if (s.headless && !script.empty() && script_pos >= script.size()) {
+            // After the script: the mouse stays where it ended (a hover lasts until the picture).
+            const MouseFrame& f = script.back();
+            io.MousePos = f.x < 0 ? ImVec2(-FLT_MAX, -FLT_MAX) : ImVec2(f.x, f.y);
+            for (bool& b : io.MouseDown) b = false;
+            io.MouseWheel = 0;
         }
         ImGui::NewFrame();
         int fb_w = 0, fb_h = 0;
         glfwGetFramebufferSize(window, &fb_w, &fb_h);
         layout(s, io.DisplaySize.x, io.DisplaySize.y);
         const float fbs_x = io.DisplayFramebufferScale.x, fbs_y = io.DisplayFramebufferScale.y;
-        const int vx = (int)std::lround(s.view.x * fbs_x), vw = std::max(1, fb_w - vx), vh = std::max(1, fb_h);
+        // The 3D view's rectangle in framebuffer pixels (GL counts rows from the bottom).
+        const int vx = (int)std::lround(s.view.x * fbs_x), vw = std::max(1, (int)std::lround(s.view.w * fbs_x));
+        const int vh = std::max(1, (int)std::lround(s.view.h * fbs_y));
+        const int vy = std::max(0, fb_h - (int)std::lround((s.view.y + s.view.h) * fbs_y));
         const float aspect = float(vw) / float(vh);
         camera.up_axis = s.up_axis;
         if (need_home && scene.loaded()) {
@@ -503,7 +596,7 @@ int main(int argc, char** argv) {
             p.mvp = camera.projection(aspect) * camera.view();
             p.eye = camera.eye();
             p.viewport[0] = vx;
-            p.viewport[1] = 0;
+            p.viewport[1] = vy;
             p.viewport[2] = vw;
             p.viewport[3] = vh;
             p.style[0] = s.style[0];
@@ -630,7 +723,7 @@ int main(int argc, char** argv) {
                     exit_code = 1;
                 } else {
                     exit_code = s.errors.empty() ? 0 : 2;
-                    if (exit_code == 0) std::printf("%s\n", state_json(s, camera, fb_w, fb_h, vx, vw).c_str());
+                    if (exit_code == 0) std::printf("%s\n", state_json(s, camera, fb_w, fb_h, params.viewport).c_str());
                 }
                 break;
             }

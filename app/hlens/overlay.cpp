@@ -143,14 +143,20 @@ void update_overlay(Stepper& st) {
     st.overlay_revision = st.revision;
     const TargetSolver& ts = *st.solver;
     const TargetFrame& fr = ts.frame();
-    const DomainMesh* mesh = ts.domain_mesh();
+    const DomainMesh* mesh = st.mesh();   // the state at the current step
     st.overlay_samples = st.overlay_disagree = st.overlay_ignored = st.overlay_ties = 0;
     st.overlay_w = st.overlay_h = 0;
     if (!mesh) return;
 
     // The sources in the target's frame (frame units, z along the target's normal).
     std::vector<std::array<Vec3, 3>> src;
-    const std::vector<uint32_t>& ids = ts.inserted_sources();
+    const std::vector<uint32_t>& all = ts.inserted_sources();   // the solver may be ahead of the step
+    const std::vector<uint32_t> ids(all.begin(), all.begin() + std::min<size_t>(all.size(), st.insertions()));
+    // Inside an insertion the domains the source has not reached yet still hold the previous
+    // state, those it took hold the new one: a sample labelled by the source being inserted is
+    // compared with the nearest feature over all sources, any other with the nearest feature
+    // over the sources before it (where the previous state is still right).
+    const int cur = st.inserting() >= 0 && !ids.empty() ? (int)ids.size() - 1 : -1;
     for (uint32_t s : ids) {
         std::array<Vec3, 3> c = ts.source_corners(s), f;
         for (int k = 0; k < 3; ++k) {
@@ -195,9 +201,15 @@ void update_overlay(Stepper& st) {
             Feature best;
             int bs = -1;
             for (size_t s = 0; s < src.size(); ++s) {
+                if ((int)s == cur) continue;
                 Feature ft = closest_feature(q, src[s][0], src[s][1], src[s][2]);
                 if (ft.d2 < best.d2) best = ft, bs = (int)s;
             }
+            if (cur >= 0 && dom[i] >= 0 && dom[i] / 8 == cur) {
+                Feature ft = closest_feature(q, src[cur][0], src[cur][1], src[cur][2]);
+                if (ft.d2 < best.d2) best = ft, bs = cur;
+            }
+            if (bs < 0) continue;
             feat[i] = code(bs, best.region);
             best_d2[i] = best.d2;
         }
@@ -254,7 +266,7 @@ void update_overlay(Stepper& st) {
     glBindTexture(GL_TEXTURE_2D, 0);
     st.overlay_tex = g_tex;
     st.overlay_gpu = false;
-    if (st.overlay_use_gpu) {
+    if (st.overlay_use_gpu && cur < 0) {   // (the shader knows one set of sources: not inside an insertion)
         // The same box at a finer resolution (the texture's row 0 is the bottom: drawn flipped).
         const double gp = std::max(bw, bh) / kGpuResolution;
         const int GW = std::max(1, (int)std::ceil(bw / gp)), GH = std::max(1, (int)std::ceil(bh / gp));

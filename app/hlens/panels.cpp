@@ -220,7 +220,7 @@ void target_window(AppState& s) {
     if (!s.scene) return;
     const int d = s.direction;
     const ViewRect& v = s.view;
-    const float w = std::min(19 * em(), 0.5f * v.w);
+    const float w = std::min((s.tiles.on ? 17 : 19) * em(), 0.5f * v.w);
     ImGui::SetNextWindowPos(ImVec2(v.x + v.w - 0.5f * em(), v.y + 0.5f * em()), ImGuiCond_Always, ImVec2(1, 0));
     ImGui::SetNextWindowSize(ImVec2(w, 0), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.88f);
@@ -263,7 +263,7 @@ void target_contents(AppState& s) {
         }
         ImGui::EndTable();
     }
-    if (ImGui::Button(s.stepper.open ? "Close timeline & domain view" : "Step through (timeline & domain view)", ImVec2(-1, 0)))
+    if (ImGui::Button(s.stepper.open ? "Close timeline" : "Step through (timeline & domain view)", ImVec2(-1, 0)))
         s.stepper.open = !s.stepper.open;
     ImGui::TextUnformatted("Trace (TargetSolver)");
     if (s.trace_running && (!s.trace[d] || s.trace[d]->target != (uint32_t)t)) {
@@ -275,6 +275,14 @@ void target_contents(AppState& s) {
     const TraceSummary& tr = *s.trace[d];
     if (!tr.error.empty()) {
         ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "failed: %s", tr.error.c_str());
+        return;
+    }
+    if (s.tiles.on) {   // the timeline is open: one line, to leave the small 3D view visible
+        ImGui::SameLine();
+        ImGui::TextDisabled("%d ins., %.3f s", tr.insertions, tr.seconds);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the whole construction: %d insertions, %d domains, %d arcs, %d vertices;\nmax %.17g",
+                              tr.insertions, tr.domains, tr.arcs, tr.vertices, tr.max);
         return;
     }
     if (ImGui::BeginTable("trace", 4, ImGuiTableFlags_SizingFixedFit)) {
@@ -489,14 +497,72 @@ bool project(const glm::mat4& mvp, const ViewRect& v, const glm::vec3& p, ImVec2
 
 }  // namespace
 
+void place_tile(const AppState::Tile& t) {
+    ImGui::SetNextWindowPos(ImVec2(t.r.x, t.r.y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(t.r.w, t.r.h), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(t.lo_w, t.lo_h), ImVec2(t.hi_w, t.hi_h));
+}
+
 void layout(AppState& s, float display_w, float display_h) {
-    s.sidebar_width = std::min(std::round(23 * em()), std::round(0.6f * display_w));
-    s.view = ViewRect{s.sidebar_width, 0, std::max(1.0f, display_w - s.sidebar_width), std::max(1.0f, display_h)};
+    const float e = em();
+    s.sidebar_width = std::min(std::round(23 * e), std::round(0.6f * display_w));
+    const ViewRect area{s.sidebar_width, 0, std::max(1.0f, display_w - s.sidebar_width), std::max(1.0f, display_h)};
+    AppState::Tiles& t = s.tiles;
+    const Stepper& st = s.stepper;
+    t.on = st.open && st.active();
+    t.graph_on = t.on && st.graph_open;
+    t.log_on = t.on && st.event_log;
+    if (!t.on) {
+        s.view = area;
+        return;
+    }
+    // A tile's free dimension: the chosen size (or the default) within [lo, hi].
+    auto pick = [](float chosen, float def, float lo, float hi) {
+        hi = std::max(lo, hi);
+        return std::max(lo, std::min(chosen > 0 ? chosen : def, hi));
+    };
+    auto pinned = [](AppState::Tile& tile) {
+        tile.lo_w = tile.hi_w = tile.r.w;
+        tile.lo_h = tile.hi_h = tile.r.h;
+    };
+    // Timeline at the bottom, full width (pinned).
+    // (as tall as its contents were on the last frame: its toolbar wraps in narrow windows)
+    const float tl_h = std::min(std::round(t.timeline_need > 0 ? std::max(5 * e, t.timeline_need) : 8.5f * e), 0.45f * area.h);
+    t.timeline.r = ViewRect{area.x, area.y + area.h - tl_h, area.w, tl_h};
+    pinned(t.timeline);
+    // Domain view on the left above it; its right edge is the user's.
+    const float up_h = std::max(1.0f, area.h - tl_h);
+    const float dv_lo = std::min(24 * e, 0.5f * area.w), dv_hi = area.w - std::min(16 * e, 0.3f * area.w);
+    const float dv_w = pick(t.domain_w, std::min(0.55f * area.w, up_h + 13 * e), dv_lo, dv_hi);
+    t.domain.r = ViewRect{area.x, area.y, dv_w, up_h};
+    pinned(t.domain);
+    t.domain.lo_w = dv_lo, t.domain.hi_w = std::max(dv_lo, dv_hi);
+    // The 3D view on the right, above a strip with the graph (left) and the event log (right).
+    ViewRect right{area.x + dv_w, area.y, std::max(1.0f, area.w - dv_w), up_h};
+    if (t.graph_on || t.log_on) {
+        const float sh_lo = std::min(8 * e, 0.3f * right.h), sh_hi = right.h - std::min(8 * e, 0.3f * right.h);
+        const float sh = pick(t.strip_h, 0.45f * right.h, sh_lo, sh_hi);
+        const float y = right.y + right.h - sh;
+        float gw = t.log_on ? 0 : right.w;
+        const float gw_lo = std::min(12 * e, 0.3f * right.w), gw_hi = right.w - std::min(12 * e, 0.3f * right.w);
+        if (t.graph_on && t.log_on) gw = pick(t.graph_w, 0.55f * right.w, gw_lo, gw_hi);
+        t.graph.r = ViewRect{right.x, y, gw, sh};
+        t.log.r = ViewRect{right.x + gw, y, right.w - gw, sh};
+        pinned(t.graph);
+        pinned(t.log);
+        // The strip's top edge belongs to the graph when it is open, else to the event log; the
+        // graph's right edge too when the log shares the strip.
+        AppState::Tile& top = t.graph_on ? t.graph : t.log;
+        top.lo_h = sh_lo, top.hi_h = std::max(sh_lo, sh_hi);
+        if (t.graph_on && t.log_on) t.graph.lo_w = gw_lo, t.graph.hi_w = std::max(gw_lo, gw_hi);
+        right.h = std::max(1.0f, right.h - sh);
+    }
+    s.view = right;
 }
 
 void draw_panels(AppState& s) {
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(s.sidebar_width, s.view.h), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(s.sidebar_width, ImGui::GetIO().DisplaySize.y), ImGuiCond_Always);
     ImGui::Begin("Hausdorff Lens", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoSavedSettings);
@@ -550,7 +616,8 @@ void draw_view_overlay(const AppState& s, const Scene& scene, const glm::mat4& m
         // The timeline's target: the sources inserted so far, over the other mesh (the latest brighter).
         const Stepper& st = s.stepper;
         if (st.open && st.active() && st.scene == s.scene && st.side == d && st.target == t) {
-            const auto& ins = st.solver->inserted_sources();
+            const auto& all = st.solver->inserted_sources();   // the solver may be ahead of the step
+            const std::vector<uint32_t> ins(all.begin(), all.begin() + std::min<size_t>(all.size(), st.insertions()));
             const TriangleMesh& other = s.scene->mesh[1 - d];
             for (size_t i = 0; i < ins.size(); ++i) {
                 if (ins[i] >= other.num_triangles()) continue;
@@ -583,7 +650,7 @@ void draw_view_overlay(const AppState& s, const Scene& scene, const glm::mat4& m
                 // r + (farthest corner from the centroid). It encloses every point within r of T'
                 // (a bounding sphere of that set, not the set itself). Drawn as the projected
                 // outline of the sphere (the farthest projection of points sampled on it).
-                const double r = st.solver->search_radius();
+                const double r = st.search_radius();
                 if (std::isfinite(r) && t >= 0) {
                     auto c = s.scene->mesh[d].corners((size_t)t);
                     const Vec3 g{(c[0].x + c[1].x + c[2].x) / 3, (c[0].y + c[1].y + c[2].y) / 3, (c[0].z + c[1].z + c[2].z) / 3};

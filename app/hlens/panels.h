@@ -3,6 +3,7 @@
 // AppState, called from draw_panels(); actions go through AppState::req.
 #pragma once
 #include <glm/glm.hpp>
+#include <imgui.h>
 
 #include "app_state.h"
 #include "scene.h"
@@ -16,6 +17,12 @@ constexpr float kClearColor[4] = {0.16f, 0.17f, 0.20f, 1.0f};
 
 // Sets state.sidebar_width and state.view for a display of that size (window coordinates).
 void layout(AppState& s, float display_w, float display_h);
+
+// Places the next window on a tile of the tiled layout (layout()): its position is fixed; a
+// dimension with lo < hi is the user's to drag (its size comes from imgui.ini, else the tile's),
+// a dimension with lo == hi is pinned. Call before ImGui::Begin.
+void place_tile(const AppState::Tile& t);
+constexpr int kTileFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
 
 // The sidebar (files, progress, distances, direction, colour map, meshes, target, help) and, when
 // there are errors, the error panel over the view.

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include "app_state.h"
+#include "panels.h"
 #include "gl.h"
 #include "overlay.h"
 
@@ -164,12 +165,113 @@ std::string event_text(const Event& e) {
 
 }  // namespace
 
+namespace {
+// SameLine() when an item `w` wide still fits on the current row, else the item starts a new row.
+void same_line_if_fits(float w) {
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + w <= right) ImGui::SameLine();
+}
+float checkbox_width(const char* label) {
+    return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+}
+}  // namespace
+
 std::string event_summary(const Event& e) { return event_text(e); }
 unsigned domain_label_colour(const DomainLabel& l, bool infinite) { return label_colour(l, infinite); }
 
 // ---- Stepper
 
+void Stepper::new_solver() {
+    snapshots.clear();
+    last_copy.reset();
+    mesh_changed = true;
+    solver = std::make_unique<TargetSolver>(*scene->grid, side, (uint32_t)target);
+    solver->record_events();
+    // Runs inside the solver, at each event as it happens (the solver is not being read then).
+    solver->on_event([this](const Event& e) {
+        switch (e.kind) {
+            case EventKind::ArcMaximum:
+            case EventKind::MaximumRaised:
+            case EventKind::SearchRadiusShrunk:
+            case EventKind::TargetFinished:
+            case EventKind::VoxelCulled:
+                // After the insertion: the solver's own state is the state here (and the mesh
+                // has been tidied since the last copy).
+                mesh_changed = true;
+                return;
+            case EventKind::SourceChosen:
+            case EventKind::DomainSplit:
+            case EventKind::DomainCreated:
+            case EventKind::DomainMerged:
+                mesh_changed = true;
+                break;
+            default:
+                break;
+        }
+        const DomainMesh* m = solver->domain_mesh();
+        if (m && (mesh_changed || !last_copy)) last_copy = std::make_shared<const DomainMesh>(*m);
+        mesh_changed = false;
+        StepSnapshot& sn = snapshots[e.step];
+        sn.mesh = m ? last_copy : nullptr;
+        sn.max_sq = solver->max_sq();
+        sn.max_2d = solver->max_point_2d();
+        sn.insertions = solver->insertions();
+        const bool inside = e.kind == EventKind::RegionsProjected || e.kind == EventKind::DomainSplit ||
+                            e.kind == EventKind::DomainCreated || e.kind == EventKind::DomainMerged;
+        sn.inserting = inside ? e.source : -1;
+    });
+}
+
+const Event* Stepper::advance() {
+    // The current step is the solver's last event: the next one starts a new insertion, and the
+    // snapshots of the previous one are no longer reachable without a replay.
+    if (step + 1 >= (long)solver->events().size()) snapshots.clear();
+    return solver->step_event();
+}
+
+const StepSnapshot* Stepper::snapshot() const {
+    auto it = snapshots.find(step);
+    return it == snapshots.end() ? nullptr : &it->second;
+}
+const DomainMesh* Stepper::mesh() const {
+    if (const StepSnapshot* sn = snapshot()) return sn->mesh.get();
+    return solver ? solver->domain_mesh() : nullptr;
+}
+double Stepper::max_sq() const {
+    if (const StepSnapshot* sn = snapshot()) return sn->max_sq;
+    return solver ? solver->max_sq() : HUGE_VAL;
+}
+Vec2 Stepper::max_2d() const {
+    if (const StepSnapshot* sn = snapshot()) return sn->max_2d;
+    return solver ? solver->max_point_2d() : Vec2();
+}
+int Stepper::insertions() const {
+    if (const StepSnapshot* sn = snapshot()) return sn->insertions;
+    return solver ? solver->insertions() : 0;
+}
+int32_t Stepper::inserting() const {
+    const StepSnapshot* sn = snapshot();
+    return sn ? sn->inserting : -1;
+}
+double Stepper::d2_at(Vec2 p) const {
+    if (!solver) return HUGE_VAL;
+    const StepSnapshot* sn = snapshot();
+    if (sn && sn->inserting >= 0 && sn->mesh) {   // half-inserted: only the domain mesh knows
+        const int f = sn->mesh->face_at(p);
+        if (f >= 0 && !sn->mesh->faces()[f].infinite) return sn->mesh->faces()[f].poly(p);
+        if (f >= 0) return HUGE_VAL;
+    }
+    // Between insertions: the exact distance to the sources inserted so far.
+    const auto& ins = solver->inserted_sources();
+    const size_t k = std::min<size_t>(ins.size(), (size_t)insertions());
+    double best = HUGE_VAL;
+    for (size_t i = 0; i < k; ++i) best = std::min(best, source_distance2(solver->frame(), solver->source_corners(ins[i]), p));
+    return best;
+}
+
 void Stepper::clear() {
+    snapshots.clear();
+    last_copy.reset();
     solver.reset();
     scene.reset();
     side = -1;
@@ -192,8 +294,7 @@ void Stepper::reset(std::shared_ptr<const LoadedScene> sc, int sd, long t) {
     side = sd;
     target = t;
     fit = true;
-    solver = std::make_unique<TargetSolver>(*scene->grid, side, (uint32_t)target);
-    solver->record_events();
+    new_solver();
     if (pending != -2) {
         long n = pending;
         pending = -2;
@@ -205,7 +306,7 @@ void Stepper::reset(std::shared_ptr<const LoadedScene> sc, int sd, long t) {
 
 void Stepper::forward() {
     if (!solver || at_end) return;
-    if (const Event* e = solver->step_event()) {
+    if (const Event* e = advance()) {
         step = e->step;
         current = *e;
     } else {
@@ -217,7 +318,10 @@ void Stepper::forward() {
 
 void Stepper::next_insertion() {
     if (!solver || at_end) return;
-    if (step + 1 >= (long)solver->events().size()) solver->step();
+    if (step + 1 >= (long)solver->events().size()) {
+        snapshots.clear();
+        solver->step();
+    }
     const long last = (long)solver->events().size() - 1;
     while (step < last) {
         const Event* e = solver->step_event();
@@ -237,22 +341,15 @@ void Stepper::back() {
 
 void Stepper::jump(long n) {
     if (!solver) return;
-    if (n < step) {   // replay from the start
-        if (n < 0) {
-            solver = std::make_unique<TargetSolver>(*scene->grid, side, (uint32_t)target);
-            solver->record_events();
-            step = -1;
-            current.reset();
-        } else {
-            solver = TargetSolver::replay_to(*scene->grid, side, (uint32_t)target, n);
-            const auto& ev = solver->events();
-            step = std::min<long>(n, (long)ev.size() - 1);
-            if (step >= 0) current = ev[step];
-        }
-        at_end = solver->finished() && step + 1 >= (long)solver->events().size();
-    } else {
+    if (n < step) {   // replay from the start (as TargetSolver::replay_to, observed)
+        new_solver();
+        step = -1;
+        current.reset();
+        at_end = false;
+    }
+    {
         while (step < n && !at_end) {
-            const Event* e = solver->step_event();
+            const Event* e = advance();
             if (!e) {
                 at_end = true;
                 break;
@@ -306,7 +403,7 @@ void Stepper::rebuild() {
     vertices.clear();
     live_domains = live_arcs = live_vertices = 0;
     rebuild_voxels();
-    const DomainMesh* m = solver ? solver->domain_mesh() : nullptr;
+    const DomainMesh* m = mesh();
     if (!m) return;
     live_domains = m->num_live_faces();
     live_arcs = m->num_live_edges();
@@ -358,15 +455,11 @@ void sync_stepper(AppState& s) {
 void draw_timeline(AppState& s) {
     Stepper& st = s.stepper;
     if (!st.open || !st.active()) return;
-    const ViewRect& v = s.view;
-    const float h = 8.5f * em();
-    ImGui::SetNextWindowPos(ImVec2(v.x + 0.5f * em(), v.y + v.h - 0.5f * em()), ImGuiCond_FirstUseEver, ImVec2(0, 1));
-    ImGui::SetNextWindowSize(ImVec2(v.w - em(), h), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.92f);
+    place_tile(s.tiles.timeline);
     char title[96];
     std::snprintf(title, sizeof title, "Timeline: target %ld of %s###timeline", st.target, st.side == 0 ? "A" : "B");
     bool open = true;
-    if (!ImGui::Begin(title, &open)) {   // position and size kept in imgui.ini (interactive runs)
+    if (!ImGui::Begin(title, &open, kTileFlags)) {
         ImGui::End();
         st.open = open;
         return;
@@ -388,18 +481,18 @@ void draw_timeline(AppState& s) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("last: the finished target");
     ImGui::SameLine();
     if (ImGui::Button(st.playing ? "Pause" : "Play ", ImVec2(4 * em(), 0))) st.playing = !st.playing;
-    ImGui::SameLine();
+    same_line_if_fits(9 * em() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("ev/s").x);
     ImGui::SetNextItemWidth(9 * em());
     ImGui::SliderFloat("ev/s", &st.speed, 1, 500, "%.0f", ImGuiSliderFlags_Logarithmic);
-    ImGui::SameLine();
+    same_line_if_fits(7 * em() + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize("Go to step").x + 2 * ImGui::GetStyle().FramePadding.x);
     ImGui::SetNextItemWidth(7 * em());
     bool go = ImGui::InputInt("##jump", &st.jump_input, 1, 100, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     go = ImGui::Button("Go to step") || go;
     if (go) st.jump(std::max(-1, st.jump_input));
-    ImGui::SameLine();
+    same_line_if_fits(checkbox_width("regions"));
     ImGui::Checkbox("regions", &st.show_regions);
-    ImGui::SameLine();
+    same_line_if_fits(checkbox_width("voxels & radius"));
     ImGui::Checkbox("voxels & radius", &st.show_voxels);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("3D view: voxels seen so far (green visited, yellow pending, grey culled)\n"
@@ -408,9 +501,9 @@ void draw_timeline(AppState& s) {
                           "within r of T' (%ld visited, %ld pending, %ld culled)",
                           st.vox_visited, st.vox_pending, st.vox_culled);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("outline the seven regions of the source being inserted");
-    ImGui::SameLine();
+    same_line_if_fits(checkbox_width("event log"));
     ImGui::Checkbox("event log", &st.event_log);
-    ImGui::SameLine();
+    same_line_if_fits(checkbox_width("graph"));
     ImGui::Checkbox("graph", &st.graph_open);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the graph of d^2 over T' at this step (drag orbits, wheel zooms)");
 
@@ -421,12 +514,12 @@ void draw_timeline(AppState& s) {
         if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) st.forward();
         if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) st.playing = !st.playing;
     }
-    if (st.playing && !s.headless) {
+    if (st.playing) {   // (headless: ImGui's clock runs 1/60 s a frame)
         st.play_accum += io.DeltaTime * st.speed;
         int n = std::min(1000, (int)st.play_accum);
         st.play_accum -= n;
         for (int i = 0; i < n && !st.at_end; ++i) {
-            const Event* e = st.solver->step_event();
+            const Event* e = st.advance();
             if (!e) {
                 st.at_end = true;
                 break;
@@ -451,9 +544,9 @@ void draw_timeline(AppState& s) {
         ImGui::TextColored(ImVec4(0.5f, 1, 0.5f, 1), "  finished");
     }
     ImGui::TextDisabled("%s", st.current ? event_text(*st.current).c_str() : "");
-    const double mx = ts.max_sq();
-    const double r = ts.search_radius();
-    ImGui::Text("insertions %d   domains %d   arcs %d   vertices %d   max %s   search radius %s", ts.insertions(),
+    const double mx = st.max_sq();
+    const double r = st.search_radius();
+    ImGui::Text("insertions %d   domains %d   arcs %d   vertices %d   max %s   search radius %s", st.insertions(),
                 st.live_domains, st.live_arcs, st.live_vertices,
                 std::isfinite(mx) ? std::to_string(std::sqrt(mx)).c_str() : "inf",
                 std::isfinite(r) ? std::to_string(r).c_str() : "inf");
@@ -468,16 +561,20 @@ void draw_timeline(AppState& s) {
             st.radius_plot[e.insertion - 1] = (float)e.radius;
         }
     }
+    // The plot goes right of the three lines of text when it fits, else below them.
     const float plot_w = 22 * em();
-    if (ImGui::GetWindowContentRegionMax().x > plot_w + 48 * em() && !st.radius_plot.empty()) {
+    if (!st.radius_plot.empty()) {
         const float lh = ImGui::GetTextLineHeightWithSpacing();
-        ImGui::SetCursorPos(ImVec2(ImGui::GetWindowContentRegionMax().x - plot_w, ImGui::GetCursorPosY() - 3 * lh));
+        const bool beside = ImGui::GetWindowContentRegionMax().x > plot_w + 48 * em();
+        if (beside) ImGui::SetCursorPos(ImVec2(ImGui::GetWindowContentRegionMax().x - plot_w, ImGui::GetCursorPosY() - 3 * lh));
         char overlay[64];
         std::snprintf(overlay, sizeof overlay, "search radius %.4g", st.radius_plot.back());
         ImGui::PlotLines("##radius", st.radius_plot.data(), (int)st.radius_plot.size(), 0, overlay, 0.0f, FLT_MAX,
-                         ImVec2(plot_w, 3 * lh - ImGui::GetStyle().ItemSpacing.y));
+                         ImVec2(beside ? plot_w : std::max(plot_w, ImGui::GetContentRegionAvail().x), 3 * lh - ImGui::GetStyle().ItemSpacing.y));
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("search radius after each insertion, up to the current step");
     }
+    // The height all this needs: the layout gives the timeline tile that much from the next frame.
+    s.tiles.timeline_need = ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y - ImGui::GetStyle().ItemSpacing.y;
     ImGui::End();
 }
 
@@ -486,24 +583,21 @@ void draw_timeline(AppState& s) {
 void draw_domain_view(AppState& s) {
     Stepper& st = s.stepper;
     if (!st.open || !st.active()) return;
-    const ViewRect& v = s.view;
-    const float tl_h = 9.5f * em();
-    ImGui::SetNextWindowPos(ImVec2(v.x + 0.5f * em(), v.y + 0.5f * em()), ImGuiCond_FirstUseEver);
-    // Left of the target window when there is room, else over it (small windows).
-    const float dv_w = std::min(v.w - em(), std::max(v.w - 20.5f * em(), 34 * em()));
-    ImGui::SetNextWindowSize(ImVec2(dv_w, std::max(12 * em(), v.h - tl_h)), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.96f);
+    place_tile(s.tiles.domain);
     bool open = true;
-    if (!ImGui::Begin("Domain view", &open, ImGuiWindowFlags_NoScrollbar |
-                                                ImGuiWindowFlags_NoScrollWithMouse)) {
+    if (!ImGui::Begin("Domain view", &open, kTileFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
         ImGui::End();
         st.open = open;
         return;
     }
     st.open = open;
+    s.tiles.domain_w = ImGui::GetWindowSize().x;   // the user may drag the right edge
     const TargetSolver& ts = *st.solver;
-    const DomainMesh* mesh = ts.domain_mesh();
+    const DomainMesh* mesh = st.mesh();   // as it was at the current step
     const TargetFrame& fr = ts.frame();
+    // Arc maxima belong to a finished insertion (inside one, the solver's are of the previous mesh).
+    static const std::vector<Candidate> kNone;
+    const std::vector<Candidate>& candidates = st.snapshot() ? kNone : ts.candidates();
 
     const float legend_w = 10 * em();
     ImVec2 avail = ImGui::GetContentRegionAvail();
@@ -544,6 +638,11 @@ void draw_domain_view(AppState& s) {
         st.pan_y += before.y - after.y;
     }
     if (hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) st.fit = true;
+    for (int k = 0; k < 3; ++k) {
+        const ImVec2 q = to_screen(fr.corners[k]);
+        st.corner_screen[k][0] = q.x, st.corner_screen[k][1] = q.y;
+    }
+    st.hover_arc = st.hover_face = -1;
 
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 c1(c0.x + csize.x, c0.y + csize.y);
@@ -580,7 +679,7 @@ void draw_domain_view(AppState& s) {
         dl->AddPolyline(pts.data(), (int)pts.size(), col, 0, w);
     }
     for (const Vec2& p : st.vertices) dl->AddCircleFilled(to_screen(p), 2.2f, IM_COL32(20, 20, 25, 255), 8);
-    for (const Candidate& c : ts.candidates())
+    for (const Candidate& c : candidates)
         if (c.edge >= 0) dl->AddCircle(to_screen(c.p), 4.5f, IM_COL32(255, 140, 0, 255), 12, 2.0f);
     // Regions of the source being inserted.
     const Event* reg = st.show_regions ? st.regions_event() : nullptr;
@@ -597,14 +696,33 @@ void draw_domain_view(AppState& s) {
             dl->AddText(ImVec2(q.x - 0.5f * ts2.x, q.y - 0.5f * ts2.y), IM_COL32(255, 240, 120, 255), name.c_str());
         }
     }
-    if (std::isfinite(ts.max_sq()) && mesh) {
-        ImVec2 q = to_screen(ts.max_point_2d());
+    // The domains the current event is about (split pieces, the relabelled or the merged domain).
+    if (st.current && st.snapshot()) {
+        const Event& e = *st.current;
+        std::vector<int> ids = e.kind == EventKind::DomainSplit ? e.faces : std::vector<int>{};
+        if (e.kind == EventKind::DomainCreated || e.kind == EventKind::DomainMerged) ids.push_back(e.face);
+        for (const DomainDraw& d : st.domains)
+            if (std::find(ids.begin(), ids.end(), d.face) != ids.end()) {
+                pts.clear();
+                for (const Vec2& p : d.outer) pts.push_back(to_screen(p));
+                dl->AddPolyline(pts.data(), (int)pts.size(), IM_COL32(0, 230, 255, 255), ImDrawFlags_Closed, 3.0f);
+            }
+    }
+    if (std::isfinite(st.max_sq()) && mesh) {
+        ImVec2 q = to_screen(st.max_2d());
         dl->AddCircleFilled(q, 8, IM_COL32(230, 30, 40, 255), 20);
         dl->AddCircle(q, 8, IM_COL32(255, 255, 255, 255), 20, 2.0f);
         dl->AddLine(ImVec2(q.x - 12, q.y), ImVec2(q.x + 12, q.y), IM_COL32(255, 255, 255, 255), 1.5f);
         dl->AddLine(ImVec2(q.x, q.y - 12), ImVec2(q.x, q.y + 12), IM_COL32(255, 255, 255, 255), 1.5f);
     }
     if (!mesh) dl->AddText(ImVec2(c0.x + em(), c0.y + em()), IM_COL32(220, 220, 220, 255), "degenerate target: no domain mesh");
+    if (mesh && st.inserting() >= 0) {
+        char note[160];
+        std::snprintf(note, sizeof note, "inside insertion %d (T %d): domains it has not reached keep their labels",
+                      st.insertions(), st.inserting());
+        dl->AddText(nullptr, 0, ImVec2(c0.x + 0.5f * em(), c0.y + 0.4f * em()), IM_COL32(0, 230, 255, 255), note, nullptr,
+                    csize.x - em());   // wrapped to the canvas
+    }
     dl->PopClipRect();
 
     // Hover: an arc within 5 px first, else the domain under the mouse.
@@ -620,13 +738,14 @@ void draw_domain_view(AppState& s) {
                 float ex = p.x + t * dx - m.x, ey = p.y + t * dy - m.y, dd = std::sqrt(ex * ex + ey * ey);
                 if (dd < bd) bd = dd, best = a.edge;
             }
+        st.hover_arc = best;
         if (best >= 0) {
             const auto& E = mesh->edges()[best];
             ImGui::BeginTooltip();
             ImGui::Text("arc %d: %s, %s", best, arc_kind_name(E.kind), conic_type_name(decompose_conic(E.equation).type));
             ImGui::Text("%s = 0", E.equation.to_string().c_str());
             bool any = false;
-            for (const Candidate& c : ts.candidates())
+            for (const Candidate& c : candidates)
                 if (c.edge == best) {
                     ImGui::Text("interior maximum d^2 %.6g at %s", c.value, vec_text(c.p).c_str());
                     any = true;
@@ -635,6 +754,7 @@ void draw_domain_view(AppState& s) {
             ImGui::EndTooltip();
         } else {
             const int f = mesh->face_at(to_frame(m));
+            st.hover_face = f;
             if (f >= 0) {
                 const auto& F = mesh->faces()[f];
                 ImGui::BeginTooltip();

@@ -2,11 +2,17 @@
 // the timeline panel, and the drawing data of its domain mesh for the 2D domain view.
 //
 // The solver runs on the UI thread: one event (or one insertion) per request is cheap, and
-// stepping back replays from the start (TargetSolver::replay_to, the construction is
-// deterministic). After every change rebuild() turns the domain mesh into polygons in the
-// target's frame; the domain view only transforms and draws them.
+// stepping back replays from the start (the construction is deterministic). After every change
+// rebuild() turns the domain mesh into polygons in the target's frame; the domain view only
+// transforms and draws them.
+//
+// The solver produces the events of a whole insertion at once (its state is then the state after
+// that insertion), so an observer keeps a snapshot of the state at each event of the insertion in
+// progress: the views show the domain mesh as it was at the current event, half-cut domains
+// included. mesh(), max_sq(), insertions() ... give that state.
 #pragma once
 #include <climits>
+#include <map>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -32,6 +38,15 @@ struct ArcDraw {
     int edge = -1;
     ArcKind kind = ArcKind::Conic;
     std::vector<Vec2> pts;            // the arc sampled between z0 and z1
+};
+
+// The state at one event inside an insertion.
+struct StepSnapshot {
+    std::shared_ptr<const DomainMesh> mesh;   // null for a degenerate target
+    double max_sq = HUGE_VAL;                 // world units
+    Vec2 max_2d;
+    int insertions = 0;                       // sources inserted (the one being inserted included)
+    int32_t inserting = -1;                   // the source being inserted, once its regions are projected
 };
 
 struct Stepper {
@@ -71,6 +86,7 @@ struct Stepper {
     bool log_dirty = true;
     long log_scrolled_step = -2;      // the step last scrolled into view
     long log_shown = 0, log_total = 0;   // for the headless JSON line
+    float log_current_y = -1, log_row_x = 0, log_row_h = 0;   // the current step's line on screen (-1: not shown)
 
     // Voxels seen so far at the current step, and the search radius envelope, in the 3D view.
     // voxel_states() is not tied to steps (the solver may run ahead of the current event), so
@@ -104,8 +120,26 @@ struct Stepper {
     bool overlay_use_gpu = true;        // draw the overlay with overlay.frag.glsl (the comparison stays on the CPU)
     bool overlay_gpu = false;           // the texture shown came from the GPU (row 0 at the bottom)
 
-    // The domain view's canvas on screen, for the headless JSON line.
+    // The domain view's canvas on screen, the corners of T' there and what the mouse hovers, for
+    // the headless JSON line.
     float view_rect[4] = {0, 0, 0, 0};
+    float corner_screen[3][2] = {{0, 0}, {0, 0}, {0, 0}};
+    int hover_arc = -1, hover_face = -1;
+
+    // The state at the current step: a snapshot inside an insertion, else the solver's own.
+    std::map<long, StepSnapshot> snapshots;   // events of the solver's latest insertion
+    std::shared_ptr<const DomainMesh> last_copy;
+    bool mesh_changed = true;
+    const StepSnapshot* snapshot() const;
+    const DomainMesh* mesh() const;
+    double max_sq() const;
+    Vec2 max_2d() const;
+    int insertions() const;
+    double search_radius() const { return std::sqrt(max_sq()); }
+    int32_t inserting() const;                // the source whose insertion is under way (-1: none)
+    // d^2 at p (frame units) as the current state has it: the domain's polynomial inside an
+    // insertion, else the exact distance to the inserted sources.
+    double d2_at(Vec2 p) const;
 
     void reset(std::shared_ptr<const LoadedScene> sc, int sd, long t);
     void clear();
@@ -117,6 +151,8 @@ struct Stepper {
     void to_end();
     void jump(long n);                // to just after event n (LONG_MAX: the end)
     void rebuild();
+    const Event* advance();           // the solver's next event, keeping the snapshots
+    void new_solver();                // a fresh solver for the target, observed
     void rebuild_voxels();            // `voxels` and the counts at the current step
     // The last RegionsProjected event at or before the current step, if any.
     const Event* regions_event() const;
