@@ -1086,3 +1086,33 @@ TEST(Gui, StateInsideAnInsertionAgreesWithTheOverlay) {
     for (const char* k : {"domains", "arcs", "vertices", "insertions", "inserting"})
         EXPECT_EQ(num(back.out, k, back.out.find("\"step_state\"")), num(at40.out, k, at40.out.find("\"step_state\""))) << k;
 }
+
+// Opening a target's timeline frames the target and the sphere of its largest distance (the
+// search region is small on a real mesh); Home goes back to the whole scene.
+TEST(Gui, OpeningTheTimelineFramesTheTarget) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "focus.png";
+    Outcome whole = run_gui({"--direction", "ba", "--target", "22"}, png, dir);
+    Outcome focused = run_gui({"--direction", "ba", "--target", "22", "--step", "10"}, png, dir);
+    Outcome home = run_gui({"--direction", "ba", "--target", "22", "--step", "10", "--key", "home"}, png, dir);
+    ASSERT_EQ(whole.code, 0) << whole.err;
+    ASSERT_EQ(focused.code, 0) << focused.err;
+    ASSERT_EQ(home.code, 0) << home.err;
+    EXPECT_LT(num(focused.out, "distance"), num(whole.out, "distance"));
+    auto p0 = num_list(whole.out, "pivot"), p1 = num_list(focused.out, "pivot"), p2 = num_list(home.out, "pivot");
+    auto o = num_list(focused.out, "origin");
+    ASSERT_EQ(p1.size(), 3u);
+    ASSERT_EQ(p2.size(), 3u);
+    ASSERT_EQ(o.size(), 3u);
+    // The pivot is the centroid of triangle 22 of B (world = pivot + origin).
+    hlens::TriangleMesh B = hlens::load_mesh(kDemoB);
+    const auto c = B.corners(22);
+    const hlens::Vec3 g = (c[0] + c[1] + c[2]) / 3.0;
+    EXPECT_NEAR(p1[0] + o[0], g.x, 1e-5);
+    EXPECT_NEAR(p1[1] + o[1], g.y, 1e-5);
+    EXPECT_NEAR(p1[2] + o[2], g.z, 1e-5);
+    // Home frames the whole scene again (in the 3D tile, a little narrower than the full view).
+    EXPECT_GT(num(home.out, "distance"), 0.9 * num(whole.out, "distance"));
+    EXPECT_NEAR(p2[0], p0[0], 1e-5);
+    EXPECT_NEAR(p2[1], p0[1], 1e-5);
+}

@@ -26,6 +26,7 @@ struct ColourRange {
 
 struct Requests {
     bool cancel = false, recompute = false, home = false, screenshot = false, clear_errors = false;
+    bool focus = false;           // frame the selected target and the sphere of its largest distance
     int set_direction = -1;
     long select = -2;             // -2: nothing; -1: clear the selection; >= 0: select that target
     bool load = false;            // open load_path[0], load_path[1] as A and B

@@ -40,8 +40,9 @@ const char* usage_text() {
            "                      (fonts and sizes follow, as when it really happens)\n"
            "\n"
            "Mouse: left-drag orbits, right- or shift+left-drag pans, the wheel zooms, a click picks a\n"
-           "target, a double-click recentres. Keys: Home resets the camera, F12 saves a PNG, F1 shows\n"
-           "every mouse action and shortcut (keys are ignored while typing in a text field).\n";
+           "target, a double-click recentres. Keys: Home resets the camera, F frames the target, F12 saves\n"
+           "a PNG, F1 shows every mouse action and shortcut (keys are ignored while typing in a text\n"
+           "field).\n";
 }
 
 namespace {

@@ -27,6 +27,12 @@ struct Camera {
     // Default view of a box (local coordinates): pivot at its centre, the distance that fits all
     // eight corners into the view with a margin, at the default yaw and pitch.
     void frame(const glm::vec3& lo, const glm::vec3& hi, float aspect, bool reset_angles = true);
+    // Frames a small part of the scene (same angles), keeping the clip planes of the whole scene.
+    void focus(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
+        const float whole = scene_radius;
+        frame(lo, hi, aspect, false);
+        scene_radius = std::max(whole, scene_radius);
+    }
 };
 
 // Up axis guess: +Z when the box is flat in Z (a height field, like the demo), otherwise +Y.

@@ -16,6 +16,7 @@
 #include <cinttypes>
 #include <memory>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -83,6 +84,10 @@ void apply_dpi_scale(float scale, bool rebuild_texture) {
     }
 }
 
+// Ctrl-C or a polite kill ends the loop as closing the window does (the layout is saved).
+volatile std::sig_atomic_t g_quit = 0;
+void on_signal(int) { g_quit = 1; }
+
 void glfw_error(int code, const char* what) { std::fprintf(stderr, "hlens: GLFW error %d: %s\n", code, what); }
 
 // Settings of interactive runs live in ~/.config/hlens/ (never the current directory).
@@ -124,7 +129,7 @@ std::string json_number(double v) {
 }
 
 // The state behind a headless picture, one JSON line.
-std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h, const int vp[4]) {
+std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin, int fb_w, int fb_h, const int vp[4]) {
     const int d = s.direction;
     const long t = s.selected[d];
     const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
@@ -146,7 +151,8 @@ std::string state_json(const AppState& s, const Camera& cam, int fb_w, int fb_h,
     j += ", \"hausdorff\": " + (s.computed ? json_number(s.result.hausdorff) : "null");
     j += ", \"camera\": {\"yaw\": " + json_number(cam.yaw) + ", \"pitch\": " + json_number(cam.pitch) +
          ", \"distance\": " + json_number(cam.distance) + ", \"pivot\": [" + json_number(cam.pivot.x) + ", " +
-         json_number(cam.pivot.y) + ", " + json_number(cam.pivot.z) + "]}";
+         json_number(cam.pivot.y) + ", " + json_number(cam.pivot.z) + "], \"origin\": [" + json_number(origin.x) + ", " +
+         json_number(origin.y) + ", " + json_number(origin.z) + "]}";   // pivot + origin: world coordinates
     j += ", \"size\": [" + std::to_string(fb_w) + ", " + std::to_string(fb_h) + "]";
     // The 3D view: x, y from the top, width, height (framebuffer pixels).
     j += ", \"viewport\": [" + std::to_string(vp[0]) + ", " + std::to_string(fb_h - vp[1] - vp[3]) + ", " +
@@ -376,6 +382,9 @@ int main(int argc, char** argv) {
     }
     if (!opt.export_dir.empty()) s.export_dir = opt.export_dir;
 
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+
     // ---- 1. Window and OpenGL 3.3 core context
     glfwSetErrorCallback(glfw_error);
     if (!glfwInit()) {
@@ -438,6 +447,7 @@ int main(int argc, char** argv) {
             compute.start(s.path[0], s.path[1]);
     };
     start_compute();
+    long focused_key = -1;   // the stepped target the camera was last framed on
     bool need_home = false, target_applied = opt.target < 0, compute_done = false;
     bool press_in_view[3] = {false, false, false};
     bool press_was_double = false;   // the press of a double-click: its release does not pick
@@ -446,7 +456,7 @@ int main(int argc, char** argv) {
     int settle = 0, redraw = 3, exit_code = -1;
     bool step_applied = false;
 
-    while (!glfwWindowShouldClose(window)) {
+    while (!glfwWindowShouldClose(window) && !g_quit) {
         // ---- 1. Events (interactive and idle: sleep until something happens)
         const bool busy = compute.running() || trace.running();
         if (s.headless || busy || redraw > 0)
@@ -642,6 +652,7 @@ int main(int argc, char** argv) {
             if (!io.WantCaptureKeyboard && !io.WantTextInput) {   // never while typing in a text field
                 if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) s.help_open = !s.help_open;
                 if (ImGui::IsKeyPressed(GLFW_KEY_HOME, false)) s.req.home = true;
+                if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) s.req.focus = true;
                 if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) s.req.screenshot = true;
             }
         }
@@ -685,6 +696,26 @@ int main(int argc, char** argv) {
             start_compute();
         }
         if (req.home && scene.loaded()) camera.frame(scene.box_lo(), scene.box_hi(), aspect);
+        // Opening the timeline of a target (or stepping another one) frames it, with room for the
+        // sphere of its largest distance, so the voxels and the search radius are visible.
+        {
+            const long key = s.stepper.open && s.stepper.active() ? s.stepper.side * (1L << 40) + s.stepper.target : -1;
+            if (key != focused_key && key >= 0) req.focus = true;
+            focused_key = key;
+        }
+        if (req.focus && scene.loaded() && s.scene && s.selected[s.direction] >= 0 &&
+            (size_t)s.selected[s.direction] < s.scene->mesh[s.direction].num_triangles()) {
+            const int d = s.direction;
+            const auto c = s.scene->mesh[d].corners((size_t)s.selected[d]);
+            const glm::vec3 p[3] = {scene.local(c[0]), scene.local(c[1]), scene.local(c[2])};
+            const glm::vec3 g = (p[0] + p[1] + p[2]) / 3.0f;
+            float reach = 0;
+            for (const glm::vec3& q : p) reach = std::max(reach, glm::length(q - g));
+            const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+            const double tmax = s.computed && (size_t)s.selected[d] < r.target_max.size() ? r.target_max[s.selected[d]] : 0;
+            const float half = 1.15f * (reach + (float)(std::isfinite(tmax) ? tmax : 0.0)) + 1e-6f;
+            camera.focus(g - glm::vec3(half), g + glm::vec3(half), aspect);
+        }
         if (req.clear_errors) s.errors.clear();
         if (req.set_direction >= 0) set_direction(s, req.set_direction);
         if (req.select >= -1) s.selected[s.direction] = req.select;
@@ -723,7 +754,7 @@ int main(int argc, char** argv) {
                     exit_code = 1;
                 } else {
                     exit_code = s.errors.empty() ? 0 : 2;
-                    if (exit_code == 0) std::printf("%s\n", state_json(s, camera, fb_w, fb_h, params.viewport).c_str());
+                    if (exit_code == 0) std::printf("%s\n", state_json(s, camera, scene.origin(), fb_w, fb_h, params.viewport).c_str());
                 }
                 break;
             }

@@ -430,6 +430,7 @@ void help_text() {
     ImGui::BulletText("click a row: jump to that step");
     ImGui::TextDisabled("Keys (not while typing in a text field)");
     ImGui::BulletText("Home: reset the view");
+    ImGui::BulletText("F: frame the target and the sphere of its largest distance (also on opening its timeline)");
     ImGui::BulletText("F12: save hlens-<time>.png");
     ImGui::BulletText("F1: this help in a window");
     ImGui::BulletText("Left / Right: one event back / forward (timeline)");
