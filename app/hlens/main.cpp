@@ -626,7 +626,9 @@ int main(int argc, char** argv) {
             for (int b = 0; b < 3; ++b)
                 if (ImGui::IsMouseClicked(b)) press_in_view[b] = over_view;
             if (ImGui::IsMouseClicked(0)) press_was_double = ImGui::IsMouseDoubleClicked(0);
-            const int px = (int)(m.x * fbs_x), py = fb_h - 1 - (int)(m.y * fbs_y);
+            // (no mouse: ImGui's position is -FLT_MAX, which does not convert to int)
+            const bool mouse_ok = ImGui::IsMousePosValid(&m);
+            const int px = mouse_ok ? (int)(m.x * fbs_x) : -1, py = mouse_ok ? fb_h - 1 - (int)(m.y * fbs_y) : -1;
             if (press_in_view[0] && ImGui::IsMouseDown(0)) {
                 if (io.KeyShift)
                     camera.pan(io.MouseDelta.x * fbs_x, io.MouseDelta.y * fbs_y, (float)vh);
