@@ -172,7 +172,6 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
     }
     const Stepper& st = s.stepper;
     if (st.open && st.active()) {   // the timeline's state: "step" is the current event (-1: none yet)
-        const TargetSolver& ts = *st.solver;
         j += ", \"step\": " + std::to_string(st.step);
         j += ", \"step_finished\": " + std::string(st.at_end ? "true" : "false");
         j += ", \"step_event\": " + (st.current ? "\"" + std::string(event_name(st.current->kind)) + "\"" : std::string("null"));
@@ -181,14 +180,13 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
              ", \"vertices\": " + std::to_string(st.live_vertices) +
              ", \"max\": " + json_number(std::sqrt(st.max_sq())) +
              ", \"search_radius\": " + json_number(st.search_radius()) +
-             ", \"highlighted\": " + std::to_string(std::min<size_t>(ts.inserted_sources().size(), st.insertions())) +
+             ", \"highlighted\": " + std::to_string(st.inserted_sources().size()) +
              ", \"inserting\": " + std::to_string(st.inserting()) +
              ", \"radius_plot\": " + std::to_string(st.radius_plot.size()) + "}";
         j += ", \"playing\": " + std::string(st.playing ? "true" : "false");
         j += ", \"voxels\": {\"visited\": " + std::to_string(st.vox_visited) + ", \"pending\": " +
              std::to_string(st.vox_pending) + ", \"culled\": " + std::to_string(st.vox_culled) + "}";
-        const float fx = fb_w / std::max(1.0f, s.view.x + s.view.w), fy = 1.0f;   // window -> framebuffer
-        (void)fy;
+        const float fx = ImGui::GetIO().DisplayFramebufferScale.x;   // window -> framebuffer
         j += ", \"domain_view\": [" + std::to_string((int)std::lround(st.view_rect[0] * fx)) + ", " +
              std::to_string((int)std::lround(st.view_rect[1] * fx)) + ", " + std::to_string((int)std::lround(st.view_rect[2] * fx)) +
              ", " + std::to_string((int)std::lround(st.view_rect[3] * fx)) + "]";
@@ -565,8 +563,10 @@ int main(int argc, char** argv) {
         // Frames are consecutive once started (a click's trace must not delay the next input).
         const bool script_running = script_pos < script.size() && compute_done && target_applied &&
                                     (script_pos > 0 || !trace.running());
-        if (script_running) {
-            const MouseFrame& f = script[script_pos++];
+        // After the script the mouse stays where it ended, buttons up (a hover lasts until the picture).
+        const bool script_over = s.headless && !script.empty() && script_pos >= script.size();
+        if (script_running || script_over) {
+            MouseFrame f = script_running ? script[script_pos++] : MouseFrame{script.back().x, script.back().y, false};
             io.MousePos = f.x < 0 ? ImVec2(-FLT_MAX, -FLT_MAX) : ImVec2(f.x, f.y);
             for (bool& b : io.MouseDown) b = false;
             io.MouseDown[0] = f.down;
@@ -574,12 +574,6 @@ int main(int argc, char** argv) {
             io.MouseWheel = f.wheel;
             for (bool& k : io.KeysDown) k = false;
             if (f.key >= 0) io.KeysDown[f.key] = true;
-        } else if (s.headless && !script.empty() && script_pos >= script.size()) {
-            // After the script: the mouse stays where it ended (a hover lasts until the picture).
-            const MouseFrame& f = script.back();
-            io.MousePos = f.x < 0 ? ImVec2(-FLT_MAX, -FLT_MAX) : ImVec2(f.x, f.y);
-            for (bool& b : io.MouseDown) b = false;
-            io.MouseWheel = 0;
         }
         ImGui::NewFrame();
         int fb_w = 0, fb_h = 0;
@@ -705,17 +699,14 @@ int main(int argc, char** argv) {
             if (key != focused_key && key >= 0) req.focus = true;
             focused_key = key;
         }
-        if (req.focus && scene.loaded() && s.scene && s.selected[s.direction] >= 0 &&
-            (size_t)s.selected[s.direction] < s.scene->mesh[s.direction].num_triangles()) {
+        Vec3 centroid;
+        double reach = 0;
+        if (req.focus && scene.loaded() && selected_target_ball(s, centroid, reach)) {
             const int d = s.direction;
-            const auto c = s.scene->mesh[d].corners((size_t)s.selected[d]);
-            const glm::vec3 p[3] = {scene.local(c[0]), scene.local(c[1]), scene.local(c[2])};
-            const glm::vec3 g = (p[0] + p[1] + p[2]) / 3.0f;
-            float reach = 0;
-            for (const glm::vec3& q : p) reach = std::max(reach, glm::length(q - g));
             const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
             const double tmax = s.computed && (size_t)s.selected[d] < r.target_max.size() ? r.target_max[s.selected[d]] : 0;
-            const float half = 1.15f * (reach + (float)(std::isfinite(tmax) ? tmax : 0.0)) + 1e-6f;
+            const float half = (float)(1.15 * (reach + (std::isfinite(tmax) ? tmax : 0.0))) + 1e-6f;
+            const glm::vec3 g = scene.local(centroid);
             camera.focus(g - glm::vec3(half), g + glm::vec3(half), aspect);
         }
         if (req.clear_errors) s.errors.clear();

@@ -150,8 +150,7 @@ void update_overlay(Stepper& st) {
 
     // The sources in the target's frame (frame units, z along the target's normal).
     std::vector<std::array<Vec3, 3>> src;
-    const std::vector<uint32_t>& all = ts.inserted_sources();   // the solver may be ahead of the step
-    const std::vector<uint32_t> ids(all.begin(), all.begin() + std::min<size_t>(all.size(), st.insertions()));
+    const std::vector<uint32_t> ids = st.inserted_sources();
     // Inside an insertion the domains the source has not reached yet still hold the previous
     // state, those it took hold the new one: a sample labelled by the source being inserted is
     // compared with the nearest feature over all sources, any other with the nearest feature

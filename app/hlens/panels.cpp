@@ -504,6 +504,17 @@ void place_tile(const AppState::Tile& t) {
     ImGui::SetNextWindowSizeConstraints(ImVec2(t.lo_w, t.lo_h), ImVec2(t.hi_w, t.hi_h));
 }
 
+bool selected_target_ball(const AppState& s, Vec3& centroid, double& reach) {
+    const int d = s.direction;
+    const long t = s.selected[d];
+    if (!s.scene || t < 0 || (size_t)t >= s.scene->mesh[d].num_triangles()) return false;
+    const auto c = s.scene->mesh[d].corners((size_t)t);
+    centroid = (c[0] + c[1] + c[2]) / 3.0;
+    reach = 0;
+    for (const Vec3& p : c) reach = std::max(reach, norm(p - centroid));
+    return true;
+}
+
 void layout(AppState& s, float display_w, float display_h) {
     const float e = em();
     s.sidebar_width = std::min(std::round(23 * e), std::round(0.6f * display_w));
@@ -617,8 +628,7 @@ void draw_view_overlay(const AppState& s, const Scene& scene, const glm::mat4& m
         // The timeline's target: the sources inserted so far, over the other mesh (the latest brighter).
         const Stepper& st = s.stepper;
         if (st.open && st.active() && st.scene == s.scene && st.side == d && st.target == t) {
-            const auto& all = st.solver->inserted_sources();   // the solver may be ahead of the step
-            const std::vector<uint32_t> ins(all.begin(), all.begin() + std::min<size_t>(all.size(), st.insertions()));
+            const std::vector<uint32_t> ins = st.inserted_sources();
             const TriangleMesh& other = s.scene->mesh[1 - d];
             for (size_t i = 0; i < ins.size(); ++i) {
                 if (ins[i] >= other.num_triangles()) continue;
@@ -652,11 +662,9 @@ void draw_view_overlay(const AppState& s, const Scene& scene, const glm::mat4& m
                 // (a bounding sphere of that set, not the set itself). Drawn as the projected
                 // outline of the sphere (the farthest projection of points sampled on it).
                 const double r = st.search_radius();
-                if (std::isfinite(r) && t >= 0) {
-                    auto c = s.scene->mesh[d].corners((size_t)t);
-                    const Vec3 g{(c[0].x + c[1].x + c[2].x) / 3, (c[0].y + c[1].y + c[2].y) / 3, (c[0].z + c[1].z + c[2].z) / 3};
-                    double reach = 0;
-                    for (const Vec3& p : c) reach = std::max(reach, norm(p - g));
+                Vec3 g;
+                double reach = 0;
+                if (std::isfinite(r) && selected_target_ball(s, g, reach)) {
                     const double R = r + reach;
                     ImVec2 cg;
                     if (project(mvp, v, scene.local(g), cg)) {

@@ -24,6 +24,10 @@ void layout(AppState& s, float display_w, float display_h);
 void place_tile(const AppState::Tile& t);
 constexpr int kTileFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse;
 
+// The centroid of the selected target of the current direction and its reach (the largest
+// distance from the centroid to a point of T', world units); false without a selected target.
+bool selected_target_ball(const AppState& s, Vec3& centroid, double& reach);
+
 // The sidebar (files, progress, distances, direction, colour map, meshes, target, help) and, when
 // there are errors, the error panel over the view.
 void draw_panels(AppState& s);

@@ -262,11 +262,14 @@ double Stepper::d2_at(Vec2 p) const {
         if (f >= 0) return HUGE_VAL;
     }
     // Between insertions: the exact distance to the sources inserted so far.
-    const auto& ins = solver->inserted_sources();
-    const size_t k = std::min<size_t>(ins.size(), (size_t)insertions());
     double best = HUGE_VAL;
-    for (size_t i = 0; i < k; ++i) best = std::min(best, source_distance2(solver->frame(), solver->source_corners(ins[i]), p));
+    for (uint32_t src : inserted_sources()) best = std::min(best, source_distance2(solver->frame(), solver->source_corners(src), p));
     return best;
+}
+std::vector<uint32_t> Stepper::inserted_sources() const {
+    if (!solver) return {};
+    const auto& all = solver->inserted_sources();   // the solver may be ahead of the step
+    return std::vector<uint32_t>(all.begin(), all.begin() + std::min<size_t>(all.size(), (size_t)insertions()));
 }
 
 void Stepper::clear() {
@@ -318,9 +321,9 @@ void Stepper::forward() {
 
 void Stepper::next_insertion() {
     if (!solver || at_end) return;
-    if (step + 1 >= (long)solver->events().size()) {
-        snapshots.clear();
-        solver->step();
+    if (const Event* e = advance()) {   // (at the end of an insertion: the first event of the next)
+        step = e->step;
+        current = *e;
     }
     const long last = (long)solver->events().size() - 1;
     while (step < last) {
@@ -518,17 +521,7 @@ void draw_timeline(AppState& s) {
         st.play_accum += io.DeltaTime * st.speed;
         int n = std::min(1000, (int)st.play_accum);
         st.play_accum -= n;
-        for (int i = 0; i < n && !st.at_end; ++i) {
-            const Event* e = st.advance();
-            if (!e) {
-                st.at_end = true;
-                break;
-            }
-            st.step = e->step;
-            st.current = *e;
-        }
-        if (st.solver->finished() && st.step + 1 >= (long)st.solver->events().size()) st.at_end = true;
-        if (n > 0) st.rebuild();
+        if (n > 0) st.jump(st.step + n);
         if (st.at_end) st.playing = false;
     } else {
         st.play_accum = 0;

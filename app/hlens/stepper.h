@@ -135,6 +135,7 @@ struct Stepper {
     double max_sq() const;
     Vec2 max_2d() const;
     int insertions() const;
+    std::vector<uint32_t> inserted_sources() const;   // the first insertions() of the solver's
     double search_radius() const { return std::sqrt(max_sq()); }
     int32_t inserting() const;                // the source whose insertion is under way (-1: none)
     // d^2 at p (frame units) as the current state has it: the domain's polynomial inside an
