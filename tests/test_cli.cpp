@@ -282,16 +282,9 @@ protected:
     }
 
     Outcome run(const std::vector<std::string>& args) {
-        std::string cmd = quote(kCli);
-        for (const std::string& a : args) cmd += " " + quote(a);
-        fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-        cmd += " >" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
-        int status = std::system(cmd.c_str());
-        Outcome r;
-        if (status != -1 && WIFEXITED(status)) r.code = WEXITSTATUS(status);
-        r.out = read_file(out);
-        r.err = read_file(err);
-        return r;
+        std::vector<std::string> argv{kCli};
+        argv.insert(argv.end(), args.begin(), args.end());
+        return hlens_test::run(argv, dir);
     }
 
     // Exit code 2, nothing on stdout, exactly one line "hlens-cli: ..." on stderr containing `needle`.

@@ -43,6 +43,7 @@ namespace fs = std::filesystem;
 using hlens_test::Outcome;
 using hlens_test::quote;
 using hlens_test::read_file;
+using hlens_test::run;
 using hlens_test::write_file;
 
 namespace {
@@ -66,20 +67,6 @@ fs::path scratch_dir() {
     fs::remove_all(d);
     fs::create_directories(d);
     return d;
-}
-
-// Runs argv with stdout and stderr into files of `dir`; in `cwd` when given.
-Outcome run(const std::vector<std::string>& argv, const fs::path& dir, const fs::path& cwd = {}) {
-    std::string cmd = cwd.empty() ? "" : "cd " + quote(cwd.string()) + " && ";
-    for (const std::string& a : argv) cmd += quote(a) + " ";
-    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    cmd += ">" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
-    int status = std::system(cmd.c_str());
-    Outcome o;
-    o.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
-    o.out = read_file(out);
-    o.err = read_file(err);
-    return o;
 }
 
 bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }

@@ -1,9 +1,13 @@
 // Helpers shared by the tests that run the project's programs (hlens-cli, hlens) as processes.
 #pragma once
+#include <sys/wait.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace hlens_test {
 
@@ -32,6 +36,20 @@ inline std::string quote(const std::string& s) {
     std::string q = "'";
     for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return q + "'";
+}
+
+// Runs argv with stdout and stderr into files of `dir`; in `cwd` when given.
+inline Outcome run(const std::vector<std::string>& argv, const fs::path& dir, const fs::path& cwd = {}) {
+    std::string cmd = cwd.empty() ? "" : "cd " + quote(cwd.string()) + " && ";
+    for (const std::string& a : argv) cmd += quote(a) + " ";
+    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+    cmd += ">" + quote(out.string()) + " 2>" + quote(err.string()) + " </dev/null";
+    int status = std::system(cmd.c_str());
+    Outcome o;
+    o.code = (status != -1 && WIFEXITED(status)) ? WEXITSTATUS(status) : -1;
+    o.out = read_file(out);
+    o.err = read_file(err);
+    return o;
 }
 
 }  // namespace hlens_test
