@@ -10,6 +10,7 @@
 #include <numeric>
 #include <thread>
 
+#include "parallel.h"
 #include "point_triangle.h"
 #include "target_solver.h"
 
@@ -21,39 +22,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kTieMargin = 1e-9;
-
-// Run body(i) for i in [0, n) on `threads` workers, taking indices in order.
-template <class F>
-void parallel_for(size_t n, int threads, const std::atomic<bool>* cancel, F&& body) {
-    std::atomic<size_t> next{0};
-    std::exception_ptr error;
-    std::mutex error_mutex;
-    auto work = [&] {
-        for (;;) {
-            if (cancel && cancel->load()) return;
-            size_t i = next.fetch_add(1);
-            if (i >= n) return;
-            try {
-                body(i);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(error_mutex);
-                if (!error) error = std::current_exception();
-                next = n;
-            }
-        }
-    };
-    int t = std::max(1, std::min<int>(threads, (int)std::max<size_t>(n, 1)));
-    std::vector<std::thread> pool;
-    for (int k = 1; k < t; ++k) pool.emplace_back(work);
-    work();
-    for (auto& th : pool) th.join();
-    if (error) std::rethrow_exception(error);
-}
-
-void atomic_max(std::atomic<double>& a, double v) {
-    double cur = a.load();
-    while (v > cur && !a.compare_exchange_weak(cur, v)) {}
-}
 
 struct Progress {
     const HausdorffOptions& opt;
@@ -85,7 +53,7 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
     const TriangleMesh& A = grid.mesh(side);
     const TriangleMesh& B = grid.mesh(1 - side);
     const size_t n = A.num_triangles();
-    const int threads = opt.threads > 0 ? opt.threads : (int)std::max(1u, std::thread::hardware_concurrency());
+    const int threads = resolve_threads(opt.threads);
     OneSidedResult r;
     r.target_max.assign(n, 0.0);
     r.target_exact.assign(n, 0);
