@@ -330,6 +330,7 @@ Value one_sided_json(const OneSidedResult& r) {
         .add("from_point", vec3(r.from_point))
         .add("to_point", vec3(r.to_point))
         .add("exact_targets", Value::integer((long long)r.exact_targets))
+        .add("exact_solves", Value::integer((long long)r.exact_solves))
         .add("seconds", Value::number(r.seconds));
 }
 
@@ -346,7 +347,7 @@ void print_one_sided(const char* title, const char* from, const char* to, const 
     std::printf("   certified interval [%s, %s]\n", g(r.lower).c_str(), g(r.upper).c_str());
     std::printf("   witness: triangle %u of %s, point %s\n", r.target, from, point_text(r.from_point).c_str());
     std::printf("            nearest point of %s %s\n", to, point_text(r.to_point).c_str());
-    std::printf("   exact targets: %zu of %zu, %.3f s\n", r.exact_targets, targets, r.seconds);
+    std::printf("   exact targets: %zu of %zu (%zu exact solves), %.3f s\n", r.exact_targets, targets, r.exact_solves, r.seconds);
 }
 
 int run_distance(const Args& args) {

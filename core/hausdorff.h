@@ -3,11 +3,10 @@
 // Straub 2007, Algorithm 1: the one-sided distance is the maximum over targets T' of A of the
 // maximum of d^2 over T' (see target_solver.h). Two modes, which must agree:
 //  - paper: every target gets the full construction;
-//  - fast:  a lower bound L (the farthest vertex of A) and a per-target upper bound U(T') (the
-//           distance to a convex set is convex, so max over T' of d(., T) is at a corner of T')
-//           let targets with U < L be skipped; the rest are solved exactly, largest U first, each
-//           stopping as soon as its own search radius falls below L. Targets whose value can
-//           equal the result are never skipped, so the witness does not depend on timing.
+//  - fast:  targets and parts of targets whose upper bound is below a rising lower bound are
+//           dropped, the pieces left are solved exactly, and every target whose value can equal
+//           the result is solved whole at the end (cascade.h), so the result, its witness and
+//           the certified interval are paper mode's whatever the timing.
 // Targets run on all cores; the result does not depend on the thread count.
 #pragma once
 #include <atomic>
@@ -36,6 +35,7 @@ struct OneSidedResult {
     uint32_t target = 0;          // witness triangle of the measured mesh
     Vec3 from_point, to_point;    // witness point on the measured mesh, its nearest point on the other
     size_t exact_targets = 0;     // targets whose maximum was computed exactly
+    size_t exact_solves = 0;      // exact constructions run (fast mode: whole targets and pieces)
     double seconds = 0;
     // Per target of the measured mesh: the maximum distance over it, exact where target_exact[i],
     // otherwise an upper bound that is below the result (fast mode skipped it).

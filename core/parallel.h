@@ -2,6 +2,8 @@
 #pragma once
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <functional>
 #include <cstddef>
 #include <exception>
 #include <mutex>
@@ -47,5 +49,24 @@ inline void atomic_max(std::atomic<double>& a, double v) {
 
 // Threads for a request: n > 0 as asked, 0 = all cores.
 inline int resolve_threads(int n) { return n > 0 ? n : (int)std::max(1u, std::thread::hardware_concurrency()); }
+
+// Counts finished items and calls `callback(fraction)` at most every 100 ms (and at the end), from
+// whichever worker thread finishes an item.
+struct ProgressTicker {
+    const std::function<void(double)>& callback;
+    size_t total;
+    std::atomic<size_t> done{0};
+    std::atomic<long long> last_ms{-1000};
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    ProgressTicker(const std::function<void(double)>& cb, size_t n) : callback(cb), total(n) {}
+    void tick() {
+        size_t d = ++done;
+        if (!callback) return;
+        using namespace std::chrono;
+        long long ms = duration_cast<milliseconds>(steady_clock::now() - start).count();
+        long long prev = last_ms.load();
+        if ((ms - prev >= 100 || d == total) && last_ms.compare_exchange_strong(prev, ms)) callback((double)d / total);
+    }
+};
 
 }  // namespace hlens

@@ -62,8 +62,12 @@ struct TargetSolver::Seen {
 };
 
 TargetSolver::TargetSolver(const VoxelGrid& grid, int side, uint32_t target)
+    : TargetSolver(grid, side, target, grid.mesh(side).corners(target)) {}
+
+TargetSolver::TargetSolver(const VoxelGrid& grid, int side, uint32_t target, const std::array<Vec3, 3>& piece)
     : grid_(grid), side_(side), target_(target) {
-    corners_ = grid_.mesh(side_).corners(target_);
+    corners_ = piece;
+    for (const Vec3& c : corners_) box_.add(c);
     frame_ = TargetFrame::make(corners_);
     centroid_ = (corners_[0] + corners_[1] + corners_[2]) / 3.0;
     for (const Vec3& c : corners_) reach_ = std::max(reach_, norm(c - centroid_));
@@ -112,7 +116,7 @@ void TargetSolver::begin() {
     // Started here, not in the constructor: several solvers may live on one thread (the debugger
     // keeps one per target), but only the one being run uses the stamps at a time.
     seen_ = std::make_unique<Seen>(grid_.num_voxels(), grid_.mesh(1 - side_).num_triangles());
-    for (size_t v : grid_.voxels_of_triangle(side_, target_)) {
+    for (size_t v : grid_.voxels_of_triangle(corners_)) {
         target_voxels_.push_back(grid_.coords(v));
         seen_->voxels().insert(v);
         queue_.push({0.0, v});
@@ -136,7 +140,7 @@ void TargetSolver::begin() {
 bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
     // Radius test with a relative margin: rounding must never cull a voxel that could matter.
     auto beyond = [&](double d2) { return d2 > max_sq_ * (1 + 1e-9) + 1e-300; };
-    const Box3 tbox = grid_.mesh(side_).triangle_bounds(target_);
+    const Box3& tbox = box_;
     for (;;) {
         while (!pending_sources_.empty()) {
             s = pending_sources_.back();
@@ -347,6 +351,13 @@ double TargetSolver::slack() const {
     return h * frame_.scale;
 }
 
+double TargetSolver::rounding_sq() const {
+    // A quadratic in the frame has coefficients of size (1 + d)^2 for points at frame distance d
+    // from a source (T' has unit size there): one evaluation is off by a few ulps of that.
+    const double d = max_sq_ < HUGE_VAL ? std::sqrt(std::max(0.0, max_sq_)) / frame_.scale : 0.0;
+    return 64 * 0x1p-52 * frame_.scale * frame_.scale * (1 + d) * (1 + d);
+}
+
 double TargetSolver::direct_d2(Vec2 p) const {
     double best = HUGE_VAL;
     for (uint32_t s : inserted_) best = std::min(best, source_distance2(frame_, source_corners(s), p));
@@ -395,7 +406,8 @@ bool TargetSolver::step() {
     uint32_t s;
     double dist;
     size_t voxel;
-    if (stop_below_ >= 0 && max_sq_ < stop_below_) { stopped_early_ = true; finish(); return false; }
+    // Stop only when the running maximum is below the bound by more than its rounding.
+    if (stop_below_ >= 0 && max_sq_ + rounding_sq() < stop_below_) { stopped_early_ = true; finish(); return false; }
     if (!next_source(s, dist, voxel)) { finish(); return false; }
     insert(s, dist, voxel);
     return true;

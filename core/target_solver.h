@@ -64,6 +64,9 @@ class TargetSolver {
 public:
     // Target `target` of mesh `side` of the grid against the other mesh.
     TargetSolver(const VoxelGrid& grid, int side, uint32_t target);
+    // Only the part `piece` of the target (a triangle inside it, e.g. a sub-triangle the fast
+    // mode's culling left): the maximum over the target is the maximum over its pieces.
+    TargetSolver(const VoxelGrid& grid, int side, uint32_t target, const std::array<Vec3, 3>& piece);
     ~TargetSolver();
     TargetSolver(const TargetSolver&) = delete;
     TargetSolver& operator=(const TargetSolver&) = delete;
@@ -100,6 +103,10 @@ public:
     // For a sliver target (handled as its three edges): how far the true maximum distance may lie
     // above max_sq()'s root. Zero for every other target.
     double slack() const;
+    // How far max_sq() may be off by the rounding of the domains' quadratics (world units squared):
+    // tiny against max_sq() unless the meshes (nearly) coincide, where d^2 is a small difference of
+    // large terms.
+    double rounding_sq() const;
     // Voxel states for display: 0 unseen, 1 pending, 2 visited, 3 culled.
     const std::vector<std::pair<size_t, uint8_t>>& voxel_states() const { return voxel_log_; }
     std::string validate() const;     // domain mesh invariants, plus face polynomials against brute force
@@ -126,7 +133,8 @@ private:
     const VoxelGrid& grid_;
     int side_;
     uint32_t target_;
-    std::array<Vec3, 3> corners_;
+    std::array<Vec3, 3> corners_;     // the target's corners, or the piece's
+    Box3 box_;                        // their bounding box
     Vec3 centroid_;
     double reach_ = 0;                // largest distance from the centroid to a point of T'
     TargetFrame frame_;

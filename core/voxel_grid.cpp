@@ -118,8 +118,14 @@ std::array<int, 3> VoxelGrid::locate(const Vec3& p) const {
 
 template <class F>
 void VoxelGrid::for_each_voxel_of(int side, uint32_t t, F&& f) const {
-    auto [a, b, c] = mesh_[side]->corners(t);
-    Box3 tb = mesh_[side]->triangle_bounds(t);
+    for_each_voxel_of(mesh_[side]->corners(t), f);
+}
+
+template <class F>
+void VoxelGrid::for_each_voxel_of(const std::array<Vec3, 3>& corners, F&& f) const {
+    const auto& [a, b, c] = corners;
+    Box3 tb;
+    for (const Vec3& p : corners) tb.add(p);
     const int n[3] = {nx, ny, nz};
     int lo[3], hi[3];
     for (int i = 0; i < 3; ++i) {
@@ -142,6 +148,12 @@ void VoxelGrid::for_each_voxel_of(int side, uint32_t t, F&& f) const {
 std::vector<size_t> VoxelGrid::voxels_of_triangle(int side, uint32_t t) const {
     std::vector<size_t> r;
     for_each_voxel_of(side, t, [&](size_t v) { r.push_back(v); });
+    return r;
+}
+
+std::vector<size_t> VoxelGrid::voxels_of_triangle(const std::array<Vec3, 3>& corners) const {
+    std::vector<size_t> r;
+    for_each_voxel_of(corners, [&](size_t v) { r.push_back(v); });
     return r;
 }
 

@@ -42,6 +42,8 @@ public:
 
     // Voxels that triangle t of mesh `side` touches (same test as the lists above), increasing.
     std::vector<size_t> voxels_of_triangle(int side, uint32_t t) const;
+    // The same for any triangle (e.g. a piece of one).
+    std::vector<size_t> voxels_of_triangle(const std::array<Vec3, 3>& corners) const;
 
     struct Nearest {
         uint32_t triangle;  // UINT32_MAX when mesh `side` has no triangles
@@ -59,6 +61,7 @@ public:
 
 private:
     template <class F> void for_each_voxel_of(int side, uint32_t t, F&& f) const;
+    template <class F> void for_each_voxel_of(const std::array<Vec3, 3>& corners, F&& f) const;
     const TriangleMesh* mesh_[2];
     double margin_ = 0;
     std::vector<size_t> offs_[2];      // CSR: list of voxel v is items_[offs_[v] .. offs_[v+1])

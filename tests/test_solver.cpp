@@ -12,12 +12,12 @@
 #include "hausdorff.h"
 #include "mesh_io.h"
 #include "target_solver.h"
+#include "test_meshes.h"
 
 using namespace hlens;
+using namespace hlens_test;
 
 namespace {
-
-TriangleMesh mesh_of(std::vector<Vec3> p, std::vector<Tri> t) { return make_mesh(std::move(p), std::move(t), "test"); }
 
 // Solve every target of A against B with the invariants checked after every insertion.
 double solve_all_checked(const TriangleMesh& A, const TriangleMesh& B, Vec3* where = nullptr) {
@@ -44,36 +44,6 @@ void expect_between_bounds(const TriangleMesh& A, const TriangleMesh& B, double 
     EXPECT_GE(exact, sb.value - 1e-12 * diag) << what;
     EXPECT_GE(exact, lb.lower - 1e-12 * diag) << what;
     EXPECT_LE(exact, lb.upper + 1e-12 * diag) << what;
-}
-
-TriangleMesh random_triangle_soup(std::mt19937& rng, int n, double size, Vec3 centre, double spread) {
-    std::uniform_real_distribution<double> U(-1, 1);
-    std::vector<Vec3> p;
-    std::vector<Tri> t;
-    for (int i = 0; i < n; ++i) {
-        Vec3 c = centre + Vec3{spread * U(rng), spread * U(rng), spread * U(rng)};
-        for (int k = 0; k < 3; ++k) p.push_back(c + Vec3{size * U(rng), size * U(rng), size * U(rng)});
-        t.push_back({(uint32_t)(3 * i), (uint32_t)(3 * i + 1), (uint32_t)(3 * i + 2)});
-    }
-    return mesh_of(p, t);
-}
-
-// A height field over [-1,1]^2 with n x n quads: shared edges and vertices everywhere.
-TriangleMesh height_field(int n, std::function<double(double, double)> z) {
-    std::vector<Vec3> p;
-    std::vector<Tri> t;
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i) {
-            double x = -1 + 2.0 * i / n, y = -1 + 2.0 * j / n;
-            p.push_back({x, y, z(x, y)});
-        }
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
-            t.push_back({a, b, d});
-            t.push_back({a, d, c});
-        }
-    return mesh_of(p, t);
 }
 
 }  // namespace

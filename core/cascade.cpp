@@ -1,0 +1,348 @@
+// Fast mode: culling by cascading bounds (design notes, "Beyond the paper: exact and fast").
+//
+// h(A,B)^2 = max over targets T' of max over T' of d^2, and the maximum over T' is the maximum over
+// any set of pieces covering T'. So a piece may be dropped as soon as an upper bound of d^2 over it
+// is below a lower bound L of the result, and only the pieces left need the exact construction.
+//
+//   L  starts at the farthest vertex of A and rises with every exact value and with the true
+//      distance of every piece's centroid (each is the distance of a point of A to B: <= h).
+//   U(S) for a piece S (a sub-triangle of T'):
+//      - for ANY triangle T of B, d(., T) is convex, so max over S of d(., T) is at a corner of S:
+//        U(S) = min over a few candidate triangles T (nearest to S's centroid, to its parent's
+//        centroid, to T''s corners) of max over corners v of |v - T|;
+//      - d(., B) is 1-Lipschitz: max over S of d <= d(c) + r, with c the centroid and r the
+//        largest |c - corner|.
+//   A piece with U(S) < L is dropped; a piece larger than the triangles of B near it is split in
+//   four at its edge midpoints (the bounds tighten as pieces shrink); a small piece that survives
+//   is solved exactly (TargetSolver on the piece, stopped as soon as its search radius is below L).
+//
+// The result is exact, not bounded: every point of A lies in a dropped piece (whose d^2 < L <= h^2)
+// or in a solved one. Comparisons use a tie margin far above rounding (tie_threshold_sq), so a
+// piece is dropped only when it is certainly below. At the end, every target that has a solved
+// piece within the tie margin of the final L is solved again whole, as paper mode solves it: the
+// maximum, its point and the lowest-index witness among equal values are then paper mode's, bit for
+// bit, whatever order the threads ran in.
+#include "cascade.h"
+
+#include <algorithm>
+#include <cmath>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <numeric>
+
+#include "parallel.h"
+#include "point_triangle.h"
+#include "target_solver.h"
+
+namespace hlens {
+
+namespace {
+
+constexpr double kTieMargin = 1e-9;  // relative, on distances
+constexpr int kMaxDepth = 10;        // pieces of 1/1024 of the target's size at most
+constexpr double kSplitRatio = 1.0;  // split while a piece is longer than this many source edges
+constexpr int kCandidates = 4;       // triangles of B tried for the corner bound of a piece
+
+using Corners = std::array<Vec3, 3>;
+
+struct Piece {
+    Corners c;
+    double u = HUGE_VAL;         // upper bound of d^2 over the piece (world units)
+    uint32_t target = 0;
+    int depth = 0;
+    bool tightened = false;      // u includes the bounds from the centroid's nearest triangle
+    uint32_t cand[kCandidates];  // candidate nearest triangles, UINT32_MAX where unused
+};
+
+double longest_edge2(const Corners& c) {
+    return std::max({norm2(c[1] - c[0]), norm2(c[2] - c[1]), norm2(c[0] - c[2])});
+}
+
+// max over the corners of S of d^2(., T): max of d^2(., T) over S, T convex.
+double corner_bound_sq(const Corners& S, const TriangleMesh& B, uint32_t t) {
+    auto tc = B.corners(t);
+    double m = 0;
+    for (const Vec3& v : S) m = std::max(m, closest_point_on_triangle(v, tc[0], tc[1], tc[2]).dist2);
+    return m;
+}
+
+// Pieces in decreasing order of their bound, shared by the workers: whole targets from a list
+// sorted once, split pieces from a heap. A worker that finds nothing waits while others may still
+// push; the run ends when nothing is queued and nobody is working.
+class PieceQueue {
+public:
+    PieceQueue(const std::vector<uint32_t>& order, const std::vector<double>& U, std::function<Piece(uint32_t)> root)
+        : order_(order), U_(U), root_(std::move(root)) {}
+
+    bool pop(Piece& out, const std::atomic<bool>* cancel) {
+        std::unique_lock<std::mutex> lock(m_);
+        for (;;) {
+            if (cancel && cancel->load()) return false;
+            const bool have_root = next_ < order_.size();
+            if (!heap_.empty() && (!have_root || heap_.front().u >= U_[order_[next_]])) {
+                std::pop_heap(heap_.begin(), heap_.end(), lower);
+                out = heap_.back();
+                heap_.pop_back();
+            } else if (have_root) {
+                out = root_(order_[next_++]);
+            } else if (busy_ == 0) {
+                return false;
+            } else {
+                cv_.wait(lock);
+                continue;
+            }
+            ++busy_;
+            return true;
+        }
+    }
+    void push(const Piece& p) {
+        std::lock_guard<std::mutex> lock(m_);
+        heap_.push_back(p);
+        std::push_heap(heap_.begin(), heap_.end(), lower);
+        cv_.notify_one();
+    }
+    void done() {
+        std::lock_guard<std::mutex> lock(m_);
+        if (--busy_ == 0) cv_.notify_all();
+    }
+    size_t roots_taken() const { return next_; }
+
+private:
+    static bool lower(const Piece& a, const Piece& b) { return a.u < b.u; }
+    const std::vector<uint32_t>& order_;
+    const std::vector<double>& U_;
+    std::function<Piece(uint32_t)> root_;
+    std::mutex m_;
+    std::condition_variable cv_;
+    std::vector<Piece> heap_;
+    size_t next_ = 0;
+    int busy_ = 0;
+};
+
+// The shared state of one cascade run.
+class Cascade {
+public:
+    Cascade(const VoxelGrid& grid, int side, const HausdorffOptions& opt, TargetTable& out)
+        : grid_(grid), side_(side), A_(grid.mesh(side)), B_(grid.mesh(1 - side)), opt_(opt), out_(out),
+          best_sq_(A_.num_triangles()), bound_sq_(A_.num_triangles()) {
+        coord_ = coordinate_magnitude(A_, B_);
+        for (auto& b : best_sq_) b = -1.0;
+        for (auto& b : bound_sq_) b = 0.0;
+    }
+
+    void run() {
+        const int threads = resolve_threads(opt_.threads);
+        std::vector<double> vertex_d2;
+        std::vector<uint32_t> near_vertex;
+        out_.vertex_sq = farthest_vertex_sq(grid_, side_, threads, opt_.cancel, &near_vertex, &vertex_d2);
+        L_ = out_.vertex_sq;
+        const size_t n = A_.num_triangles();
+        // A first bound per target from its corners (no new query), and the order in which targets
+        // are taken: largest bound first, so that L rises early.
+        std::vector<double> U(n);
+        parallel_for(n, threads, opt_.cancel, [&](size_t t) {
+            U[t] = root_piece((uint32_t)t, near_vertex, vertex_d2).u;
+        });
+        std::vector<uint32_t> order(n);
+        std::iota(order.begin(), order.end(), 0u);
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return U[x] > U[y]; });
+        PieceQueue queue(order, U, [&](uint32_t t) { return root_piece(t, near_vertex, vertex_d2); });
+        ProgressTicker prog(opt_.progress, n);
+        parallel_for((size_t)threads, threads, opt_.cancel, [&](size_t) {
+            Piece p;
+            while (queue.pop(p, opt_.cancel)) {
+                if (p.depth == 0) prog.tick();
+                process(p, queue);
+                queue.done();
+            }
+        });
+        if (opt_.cancel && opt_.cancel->load()) return;
+        solve_ties(threads);
+        out_.solves = solves_.load();
+    }
+
+private:
+    double threshold() const { return tie_threshold_sq(L_.load(), coord_); }
+
+    // A target as one piece, bounded by its corners' nearest triangles and, as d is 1-Lipschitz,
+    // by a corner's distance plus the longest edge from it.
+    Piece root_piece(uint32_t t, const std::vector<uint32_t>& near_vertex, const std::vector<double>& vertex_d2) const {
+        Piece p;
+        p.c = A_.corners(t);
+        p.target = t;
+        std::fill(p.cand, p.cand + kCandidates, UINT32_MAX);
+        int k = 0;
+        for (uint32_t v : A_.triangles[t])
+            if (near_vertex[v] != UINT32_MAX && std::find(p.cand, p.cand + k, near_vertex[v]) == p.cand + k)
+                p.cand[k++] = near_vertex[v];
+        p.u = corner_bound(p);
+        for (int i = 0; i < 3; ++i) {
+            const double r = std::sqrt(std::max(norm2(p.c[(i + 1) % 3] - p.c[i]), norm2(p.c[(i + 2) % 3] - p.c[i])));
+            const double lip = std::sqrt(vertex_d2[A_.triangles[t][i]]) + r;
+            p.u = std::min(p.u, lip * lip);
+        }
+        return p;
+    }
+
+    double corner_bound(const Piece& p) const {
+        double u = HUGE_VAL;
+        for (uint32_t c : p.cand)
+            if (c != UINT32_MAX) u = std::min(u, corner_bound_sq(p.c, B_, c));
+        return u;
+    }
+
+    // The bounds from the centroid: its true distance raises L; its nearest triangle joins the
+    // candidates; d(c) + r bounds d over the piece (1-Lipschitz). Returns false if B is empty.
+    bool tighten(Piece& p) {
+        const Vec3 c = (p.c[0] + p.c[1] + p.c[2]) / 3.0;
+        VoxelGrid::Nearest q = grid_.nearest(1 - side_, c, p.cand[0]);
+        if (q.triangle == UINT32_MAX) return false;
+        atomic_max(L_, q.dist2);  // a point of A at this distance: L <= h
+        if (std::find(p.cand, p.cand + kCandidates, q.triangle) == p.cand + kCandidates) {
+            std::copy_backward(p.cand, p.cand + kCandidates - 1, p.cand + kCandidates);
+            p.cand[0] = q.triangle;
+        }
+        double r = 0;
+        for (const Vec3& v : p.c) r = std::max(r, norm(v - c));
+        const double lipschitz = std::sqrt(q.dist2) + r;
+        p.u = std::min({p.u, corner_bound(p), lipschitz * lipschitz});
+        p.tightened = true;
+        return true;
+    }
+
+    void drop(const Piece& p) { atomic_max(bound_sq_[p.target], p.u); }
+
+    void process(Piece& p, PieceQueue& queue) {
+        if (p.u < threshold()) return drop(p);
+        if (!p.tightened && !tighten(p)) return;
+        if (p.u < threshold()) return drop(p);
+        // Split while the piece is larger than the triangles of B near it: the bounds tighten as
+        // pieces shrink, and a bound is far cheaper than a construction.
+        if (p.depth < kMaxDepth && longest_edge2(p.c) > kSplitRatio * kSplitRatio * longest_edge2(B_.corners(p.cand[0]))) {
+            const Vec3 m01 = 0.5 * (p.c[0] + p.c[1]), m12 = 0.5 * (p.c[1] + p.c[2]), m20 = 0.5 * (p.c[2] + p.c[0]);
+            for (const Corners& s : {Corners{p.c[0], m01, m20}, Corners{m01, p.c[1], m12}, Corners{m20, m12, p.c[2]},
+                                     Corners{m01, m12, m20}}) {
+                Piece child = p;  // the parent's bound holds over the child too
+                child.c = s;
+                child.depth = p.depth + 1;
+                child.tightened = false;
+                if (!tighten(child)) return;
+                if (child.u < threshold()) drop(child);
+                else queue.push(child);
+            }
+            return;
+        }
+        solve_piece(p);
+    }
+
+    void solve_piece(const Piece& p) {
+        const double l = threshold();
+        TargetSolver ts(grid_, side_, p.target, p.c);
+        ts.stop_below(l);
+        ts.run();
+        ++solves_;
+        if (ts.stopped_early()) {  // below L: its running maximum bounds it from above
+            atomic_max(bound_sq_[p.target], ts.max_sq() + ts.rounding_sq());
+            return;
+        }
+        atomic_max(L_, ts.max_sq());
+        // With its rounding: the same maximum computed over the whole target may come out higher.
+        atomic_max(best_sq_[p.target], ts.max_sq() + ts.rounding_sq());
+        if (ts.slack() > 0) {
+            std::lock_guard<std::mutex> lock(upper_mutex_);
+            out_.piece_upper = std::max(out_.piece_upper, std::sqrt(ts.max_sq()) + ts.slack());
+        }
+    }
+
+    // Targets whose pieces reach the tie margin of the final L are solved whole, as paper mode does.
+    void solve_ties(int threads) {
+        const size_t n = A_.num_triangles();
+        const double l = threshold();
+        std::vector<uint32_t> ties;
+        for (uint32_t t = 0; t < n; ++t) {
+            // An upper bound until the target is solved whole below: pieces carry their rounding.
+            out_.bound[t] = std::sqrt(std::max(bound_sq_[t].load(), std::max(best_sq_[t].load(), 0.0)));
+            if (best_sq_[t] >= l) ties.push_back(t);
+        }
+        parallel_for(ties.size(), threads, opt_.cancel, [&](size_t k) {
+            uint32_t t = ties[k];
+            TargetSolver ts(grid_, side_, t);  // no early stop: exactly paper mode's construction
+            ts.run();
+            ++solves_;
+            out_.record(t, ts);
+        });
+    }
+
+    const VoxelGrid& grid_;
+    int side_;
+    const TriangleMesh &A_, &B_;
+    const HausdorffOptions& opt_;
+    TargetTable& out_;
+    double coord_ = 0;
+    std::atomic<double> L_{0.0};
+    std::atomic<size_t> solves_{0};
+    std::mutex upper_mutex_;
+    std::vector<std::atomic<double>> best_sq_;   // per target: largest value of a solved piece (+ rounding), -1: none
+    std::vector<std::atomic<double>> bound_sq_;  // per target: largest bound of a dropped piece
+};
+
+}  // namespace
+
+void TargetTable::resize(size_t n) {
+    value_sq.assign(n, -1.0);
+    where.assign(n, Vec3{});
+    slack.assign(n, 0.0);
+    bound.assign(n, 0.0);
+    exact.assign(n, 0);
+}
+
+void TargetTable::record(uint32_t t, const TargetSolver& whole) {
+    value_sq[t] = whole.max_sq();
+    where[t] = whole.max_point();
+    slack[t] = whole.slack();
+    bound[t] = std::sqrt(whole.max_sq());
+    exact[t] = 1;
+}
+
+double coordinate_magnitude(const TriangleMesh& A, const TriangleMesh& B) {
+    Box3 box = A.bounds();
+    box.add(B.bounds());
+    return std::max({std::fabs(box.lo.x), std::fabs(box.lo.y), std::fabs(box.lo.z), std::fabs(box.hi.x), std::fabs(box.hi.y),
+                     std::fabs(box.hi.z)});
+}
+
+double tie_threshold_sq(double lower_sq, double coord) {
+    const double tie_abs = 1e-11 * (coord + 1);
+    const double l = std::max(0.0, std::sqrt(lower_sq) * (1 - kTieMargin) - tie_abs);
+    return l * l;
+}
+
+double farthest_vertex_sq(const VoxelGrid& grid, int side, int threads, const std::atomic<bool>* cancel,
+                          std::vector<uint32_t>* nearest_triangle, std::vector<double>* nearest_d2) {
+    const TriangleMesh& A = grid.mesh(side);
+    const size_t nv = A.positions.size();
+    std::vector<char> used(nv, 0);
+    for (const Tri& f : A.triangles)
+        for (uint32_t i : f) used[i] = 1;
+    std::vector<double> d2(nv, 0.0);
+    if (nearest_triangle) nearest_triangle->assign(nv, UINT32_MAX);
+    parallel_for(nv, threads, cancel, [&](size_t v) {
+        if (!used[v]) return;
+        VoxelGrid::Nearest q = grid.nearest(1 - side, A.positions[v]);
+        d2[v] = q.dist2;
+        if (nearest_triangle) (*nearest_triangle)[v] = q.triangle;
+    });
+    double m = 0;
+    for (size_t v = 0; v < nv; ++v)
+        if (used[v]) m = std::max(m, d2[v]);
+    if (nearest_d2) *nearest_d2 = std::move(d2);
+    return m;
+}
+
+void cascade_targets(const VoxelGrid& grid, int side, const HausdorffOptions& opt, TargetTable& out) {
+    out.resize(grid.mesh(side).num_triangles());
+    Cascade(grid, side, opt, out).run();
+}
+
+}  // namespace hlens

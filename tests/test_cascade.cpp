@@ -1,0 +1,160 @@
+// Fast mode's culling by cascading bounds (core/cascade.h) is safe: on random, degenerate, far and
+// real pairs it gives paper mode's result, witness and certified interval bit for bit, and every
+// per-target value it reports is an upper bound of that target's exact maximum (paper mode's), equal
+// to it where it says exact. Paper mode is the oracle here; it is itself checked against sampling
+// and Lipschitz bounds in test_solver.cpp, and here again on the pairs where that is cheap.
+#include <gtest/gtest.h>
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"  // OpenMesh's VectorT() leaves its data uninitialised
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#pragma GCC diagnostic pop
+
+#include "bounds.h"
+#include "hausdorff.h"
+#include "test_meshes.h"
+
+using namespace hlens;
+using namespace hlens_test;
+
+namespace {
+
+// Paper mode and fast mode (one and two threads) on A vs B, both directions, compared.
+void expect_fast_equals_paper(const TriangleMesh& A, const TriangleMesh& B, const std::string& what,
+                              bool check_bounds = false) {
+    SCOPED_TRACE(what);
+    HausdorffOptions paper, fast1, fast2;
+    paper.mode = Mode::Paper;
+    fast1.threads = 1;
+    fast2.threads = 2;
+    HausdorffResult p = hausdorff(A, B, paper), f1 = hausdorff(A, B, fast1), f2 = hausdorff(A, B, fast2);
+    for (auto side : {&HausdorffResult::a_to_b, &HausdorffResult::b_to_a}) {
+        const OneSidedResult &P = p.*side;
+        for (const OneSidedResult* F : {&(f1.*side), &(f2.*side)}) {
+            EXPECT_EQ(P.distance, F->distance);
+            EXPECT_EQ(P.target, F->target);
+            EXPECT_EQ(P.lower, F->lower);
+            EXPECT_EQ(P.upper, F->upper);
+            EXPECT_EQ(P.from_point, F->from_point);
+            EXPECT_LE(F->exact_targets, P.exact_targets);
+            ASSERT_EQ(F->target_max.size(), P.target_max.size());
+            size_t below = 0, unequal = 0;
+            for (size_t t = 0; t < P.target_max.size(); ++t) {
+                const double exact = P.target_max[t], tol = 1e-9 * exact + 1e-12 * (1 + A.bounds().diagonal());
+                if (F->target_max[t] < exact - tol) ++below;
+                if (F->target_exact[t] && std::fabs(F->target_max[t] - exact) > tol) ++unequal;
+            }
+            EXPECT_EQ(below, 0u) << "targets whose reported bound is below their exact maximum";
+            EXPECT_EQ(unequal, 0u) << "targets marked exact whose value differs from paper mode's";
+        }
+    }
+    if (check_bounds) {
+        VoxelGrid grid(A, B);
+        const double diag = std::max(A.bounds().diagonal(), B.bounds().diagonal());
+        for (int s = 0; s < 2; ++s) {
+            const double h = s == 0 ? p.a_to_b.distance : p.b_to_a.distance;
+            LipschitzBound lb = lipschitz_bounds(grid.mesh(s), grid, s, 1e-7 * diag);
+            EXPECT_GE(h, lb.lower - 1e-12 * diag);
+            EXPECT_LE(h, lb.upper + 1e-12 * diag);
+        }
+    }
+}
+
+TriangleMesh decimated(const TriangleMesh& m, double fraction) {
+    using OM = OpenMesh::TriMesh_ArrayKernelT<>;
+    OM om;
+    omerr().disable();  // non-manifold faces are skipped, as said: no need to print each
+    std::vector<OM::VertexHandle> vh;
+    for (const Vec3& p : m.positions) vh.push_back(om.add_vertex(OM::Point(p.x, p.y, p.z)));
+    for (const Tri& f : m.triangles) om.add_face(vh[f[0]], vh[f[1]], vh[f[2]]);  // non-manifold faces are skipped
+    OpenMesh::Decimater::DecimaterT<OM> dec(om);
+    OpenMesh::Decimater::ModQuadricT<OM>::Handle quadric;
+    dec.add(quadric);
+    dec.initialize();
+    dec.decimate_to_faces(0, size_t(fraction * om.n_faces()));
+    om.garbage_collection();
+    std::vector<Vec3> p;
+    std::vector<Tri> t;
+    for (auto v : om.vertices()) p.push_back({om.point(v)[0], om.point(v)[1], om.point(v)[2]});
+    for (auto f : om.faces()) {
+        Tri tri;
+        int k = 0;
+        for (auto v : om.fv_range(f)) tri[k++] = (uint32_t)v.idx();
+        t.push_back(tri);
+    }
+    return mesh_of(p, t);
+}
+
+TriangleMesh shared_mesh(const std::string& name) { return load_mesh(std::string(HLENS_SHARED_MESHES) + "/" + name); }
+
+}  // namespace
+
+TEST(Cascade, RandomPairs) {
+    std::mt19937 rng(101);
+    for (int i = 0; i < 6; ++i) {
+        TriangleMesh A = height_field(5 + i, [&](double x, double y) { return 0.2 * std::sin(2 * x + i) * std::cos(3 * y); });
+        TriangleMesh B = random_triangle_soup(rng, 30 + 10 * i, 0.3, {0, 0, 0}, 1.0);
+        expect_fast_equals_paper(A, B, "soup vs height field " + std::to_string(i), i < 2);
+    }
+}
+
+// The case the culling is for: a coarse mesh against a fine one (pieces smaller than the coarse
+// triangles are split off and solved on their own), and the reverse.
+TEST(Cascade, CoarseAgainstFine) {
+    for (int i = 0; i < 3; ++i) {
+        auto z = [&](double x, double y) { return 0.3 * std::sin(3 * x + i) * std::cos(2 * y - i); };
+        TriangleMesh fine = height_field(24, z), coarse = height_field(4 + i, z);
+        expect_fast_equals_paper(coarse, fine, "coarse vs fine " + std::to_string(i), i == 0);
+    }
+    // Most of the coarse mesh is culled: fewer exact constructions than targets.
+    auto z = [](double x, double y) { return 0.3 * std::sin(3 * x) * std::cos(2 * y); };
+    HausdorffResult r = hausdorff(height_field(8, z), height_field(32, z));
+    EXPECT_LT(r.a_to_b.exact_solves, 128u / 2);
+}
+
+TEST(Cascade, DegenerateConfigurations) {
+    auto bump = [](double x, double y) { return 0.15 * std::sin(x) * std::cos(y - 0.3); };
+    TriangleMesh flat = height_field(4, [](double, double) { return 0.0; });
+    TriangleMesh bumpy = height_field(12, bump);
+    // Result at a vertex of A shared by several targets: every one of them ties.
+    expect_fast_equals_paper(bumpy, flat, "bump vs plane", true);
+    // Coplanar overlapping triangulations, then one lifted vertex.
+    TriangleMesh A = height_field(5, [](double, double) { return 0.0; });
+    expect_fast_equals_paper(A, flat, "coplanar");
+    A.positions[2 * 6 + 2].z = 0.3;
+    expect_fast_equals_paper(A, flat, "coplanar, one vertex lifted");
+    // Duplicated triangles and slivers on both sides.
+    TriangleMesh D = with_duplicates_and_slivers(bumpy, 5, 3, 1e-13);
+    expect_fast_equals_paper(D, with_duplicates_and_slivers(flat, 3, 2, 0.0), "duplicates and slivers");
+    // Near-coincident: a copy moved by 1e-7.
+    expect_fast_equals_paper(bumpy, shifted(bumpy, {0, 0, 1e-7}), "near-coincident");
+    expect_fast_equals_paper(bumpy, jittered(bumpy, 1e-6, 5), "jittered by 1e-6");
+}
+
+TEST(Cascade, FarFromTheOrigin) {
+    std::mt19937 rng(29);
+    TriangleMesh A = height_field(10, [](double x, double y) { return 0.2 * std::sin(2 * x + y); });
+    TriangleMesh B = height_field(3, [](double x, double y) { return 0.1 * x * y; });
+    const Vec3 far{1e6, -2e6, 5e5};
+    expect_fast_equals_paper(shifted(A, far), shifted(B, far), "height fields at 1e6");
+    TriangleMesh S = random_triangle_soup(rng, 30, 0.4, {0, 0, 0}, 1.0);
+    expect_fast_equals_paper(shifted(A, far), shifted(S, far), "soup at 1e6");
+}
+
+TEST(Cascade, MeshesFarApart) {
+    // A small mesh far from a large one: every target's distance is about the same.
+    TriangleMesh big = height_field(16, [](double x, double y) { return 0.1 * std::sin(4 * x) * y; });
+    TriangleMesh small = shifted(height_field(3, [](double x, double y) { return 0.05 * x; }), {30, 10, 5});
+    expect_fast_equals_paper(small, big, "small far from big");
+}
+
+TEST(Cascade, RealMeshesAgainstTheirSimplifications) {
+    for (const char* name : {"woody.obj", "suzanne.obj", "elephant.off"}) {
+        TriangleMesh A = shared_mesh(name);
+        TriangleMesh B = decimated(A, 0.15);
+        ASSERT_GT(B.num_triangles(), 20u) << name;
+        expect_fast_equals_paper(A, B, std::string(name) + " vs 15%", std::string(name) == "woody.obj");
+    }
+}
