@@ -41,7 +41,8 @@ namespace {
 
 constexpr double kTieMargin = 1e-9;  // relative, on distances
 constexpr int kMaxDepth = 10;        // pieces of 1/1024 of the target's size at most
-constexpr double kSplitRatio = 1.0;  // split while a piece is longer than this many source edges
+constexpr double kSplitRatio = 1.0;  // split while a piece is longer than this many source edges,
+constexpr double kFineRatio = 0.125;  // or this many while its centroid is below L
 constexpr int kCandidates = 4;       // triangles of B tried for the corner bound of a piece
 
 using Corners = std::array<Vec3, 3>;
@@ -49,9 +50,11 @@ using Corners = std::array<Vec3, 3>;
 struct Piece {
     Corners c;
     double u = HUGE_VAL;         // upper bound of d^2 over the piece (world units)
+    double centre_sq = 0;        // d^2 at its centroid, once tightened
     uint32_t target = 0;
     int depth = 0;
     bool tightened = false;      // u includes the bounds from the centroid's nearest triangle
+    uint32_t corner_tri[3];      // nearest triangle of B to each corner
     uint32_t cand[kCandidates];  // candidate nearest triangles, UINT32_MAX where unused
 };
 
@@ -65,6 +68,52 @@ double corner_bound_sq(const Corners& S, const TriangleMesh& B, uint32_t t) {
     double m = 0;
     for (const Vec3& v : S) m = std::max(m, closest_point_on_triangle(v, tc[0], tc[1], tc[2]).dist2);
     return m;
+}
+
+// max of d^2 over S when S is cut by a plane through the edge that triangles t1 and t2 of B share,
+// bisecting their dihedral angle: each side is a convex polygon, bounded by its vertices against
+// one of the two (convexity again). Tight where S straddles that edge and d to the two triangles is
+// the distance to their planes; +inf when they share no edge.
+double edge_cut_bound_sq(const Corners& S, const TriangleMesh& B, uint32_t t1, uint32_t t2) {
+    const Tri &f1 = B.triangles[t1], &f2 = B.triangles[t2];
+    uint32_t shared[2], o1 = UINT32_MAX, o2 = UINT32_MAX;
+    int n = 0;
+    for (uint32_t v : f1) {
+        if (v == f2[0] || v == f2[1] || v == f2[2]) { if (n < 2) shared[n] = v; ++n; }
+        else o1 = v;
+    }
+    if (n != 2 || o1 == UINT32_MAX) return HUGE_VAL;
+    for (uint32_t v : f2)
+        if (v != shared[0] && v != shared[1]) o2 = v;
+    if (o2 == UINT32_MAX) return HUGE_VAL;
+    const Vec3 a = B.positions[shared[0]], e = B.positions[shared[1]] - a;
+    const double e2 = norm2(e);
+    if (!(e2 > 0)) return HUGE_VAL;
+    auto inward = [&](uint32_t o) {  // unit direction from the edge into the triangle, in its plane
+        Vec3 w = B.positions[o] - a;
+        w -= (dot(w, e) / e2) * e;
+        double l = norm(w);
+        return l > 0 ? w / l : Vec3{};
+    };
+    const Vec3 m = inward(o1) - inward(o2);
+    if (!(norm2(m) > 0)) return HUGE_VAL;  // folded onto each other: no plane between them
+    const auto c1 = B.corners(t1), c2 = B.corners(t2);
+    auto d1 = [&](const Vec3& p) { return closest_point_on_triangle(p, c1[0], c1[1], c1[2]).dist2; };
+    auto d2 = [&](const Vec3& p) { return closest_point_on_triangle(p, c2[0], c2[1], c2[2]).dist2; };
+    double side[3], u = 0;
+    for (int i = 0; i < 3; ++i) {
+        side[i] = dot(S[i] - a, m);
+        if (side[i] >= 0) u = std::max(u, d1(S[i]));
+        if (side[i] <= 0) u = std::max(u, d2(S[i]));
+    }
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        if ((side[i] > 0 && side[j] < 0) || (side[i] < 0 && side[j] > 0)) {
+            const Vec3 x = S[i] + (side[i] / (side[i] - side[j])) * (S[j] - S[i]);
+            u = std::max({u, d1(x), d2(x)});
+        }
+    }
+    return u;
 }
 
 // Pieces in decreasing order of their bound, shared by the workers: whole targets from a list
@@ -142,12 +191,12 @@ public:
         // are taken: largest bound first, so that L rises early.
         std::vector<double> U(n);
         parallel_for(n, threads, opt_.cancel, [&](size_t t) {
-            U[t] = root_piece((uint32_t)t, near_vertex, vertex_d2).u;
+            U[t] = root_piece((uint32_t)t, near_vertex, vertex_d2, HUGE_VAL).u;
         });
         std::vector<uint32_t> order(n);
         std::iota(order.begin(), order.end(), 0u);
         std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return U[x] > U[y]; });
-        PieceQueue queue(order, U, [&](uint32_t t) { return root_piece(t, near_vertex, vertex_d2); });
+        PieceQueue queue(order, U, [&](uint32_t t) { return root_piece(t, near_vertex, vertex_d2, U[t]); });
         ProgressTicker prog(opt_.progress, n);
         parallel_for((size_t)threads, threads, opt_.cancel, [&](size_t) {
             Piece p;
@@ -167,15 +216,16 @@ private:
 
     // A target as one piece, bounded by its corners' nearest triangles and, as d is 1-Lipschitz,
     // by a corner's distance plus the longest edge from it.
-    Piece root_piece(uint32_t t, const std::vector<uint32_t>& near_vertex, const std::vector<double>& vertex_d2) const {
+    // `known`: the bound when already computed.
+    Piece root_piece(uint32_t t, const std::vector<uint32_t>& near_vertex, const std::vector<double>& vertex_d2,
+                     double known) const {
         Piece p;
         p.c = A_.corners(t);
         p.target = t;
-        std::fill(p.cand, p.cand + kCandidates, UINT32_MAX);
-        int k = 0;
-        for (uint32_t v : A_.triangles[t])
-            if (near_vertex[v] != UINT32_MAX && std::find(p.cand, p.cand + k, near_vertex[v]) == p.cand + k)
-                p.cand[k++] = near_vertex[v];
+        for (int i = 0; i < 3; ++i) p.corner_tri[i] = near_vertex[A_.triangles[t][i]];
+        set_candidates(p, UINT32_MAX);
+        p.u = known;
+        if (known < HUGE_VAL) return p;
         p.u = corner_bound(p);
         for (int i = 0; i < 3; ++i) {
             const double r = std::sqrt(std::max(norm2(p.c[(i + 1) % 3] - p.c[i]), norm2(p.c[(i + 2) % 3] - p.c[i])));
@@ -185,28 +235,44 @@ private:
         return p;
     }
 
+    // Candidates: the centroid's nearest triangle first, then the corners'.
+    static void set_candidates(Piece& p, uint32_t centre_tri) {
+        std::fill(p.cand, p.cand + kCandidates, UINT32_MAX);
+        int k = 0;
+        auto add = [&](uint32_t t) {
+            if (t != UINT32_MAX && std::find(p.cand, p.cand + k, t) == p.cand + k) p.cand[k++] = t;
+        };
+        add(centre_tri);
+        for (uint32_t t : p.corner_tri) add(t);
+    }
+
     double corner_bound(const Piece& p) const {
         double u = HUGE_VAL;
-        for (uint32_t c : p.cand)
-            if (c != UINT32_MAX) u = std::min(u, corner_bound_sq(p.c, B_, c));
+        for (int i = 0; i < kCandidates && p.cand[i] != UINT32_MAX; ++i) {
+            u = std::min(u, corner_bound_sq(p.c, B_, p.cand[i]));
+            for (int j = i + 1; j < kCandidates && p.cand[j] != UINT32_MAX; ++j)
+                u = std::min(u, edge_cut_bound_sq(p.c, B_, p.cand[i], p.cand[j]));
+        }
         return u;
     }
 
     // The bounds from the centroid: its true distance raises L; its nearest triangle joins the
     // candidates; d(c) + r bounds d over the piece (1-Lipschitz). Returns false if B is empty.
     bool tighten(Piece& p) {
+        // The corners' triangles first: often enough to drop the piece without a query.
+        set_candidates(p, p.cand[0]);
+        p.u = std::min(p.u, corner_bound(p));
+        if (p.u < threshold()) return true;
         const Vec3 c = (p.c[0] + p.c[1] + p.c[2]) / 3.0;
         VoxelGrid::Nearest q = grid_.nearest(1 - side_, c, p.cand[0]);
         if (q.triangle == UINT32_MAX) return false;
         atomic_max(L_, q.dist2);  // a point of A at this distance: L <= h
-        if (std::find(p.cand, p.cand + kCandidates, q.triangle) == p.cand + kCandidates) {
-            std::copy_backward(p.cand, p.cand + kCandidates - 1, p.cand + kCandidates);
-            p.cand[0] = q.triangle;
-        }
+        set_candidates(p, q.triangle);
         double r = 0;
         for (const Vec3& v : p.c) r = std::max(r, norm(v - c));
         const double lipschitz = std::sqrt(q.dist2) + r;
         p.u = std::min({p.u, corner_bound(p), lipschitz * lipschitz});
+        p.centre_sq = q.dist2;
         p.tightened = true;
         return true;
     }
@@ -217,14 +283,24 @@ private:
         if (p.u < threshold()) return drop(p);
         if (!p.tightened && !tighten(p)) return;
         if (p.u < threshold()) return drop(p);
-        // Split while the piece is larger than the triangles of B near it: the bounds tighten as
-        // pieces shrink, and a bound is far cheaper than a construction.
-        if (p.depth < kMaxDepth && longest_edge2(p.c) > kSplitRatio * kSplitRatio * longest_edge2(B_.corners(p.cand[0]))) {
-            const Vec3 m01 = 0.5 * (p.c[0] + p.c[1]), m12 = 0.5 * (p.c[1] + p.c[2]), m20 = 0.5 * (p.c[2] + p.c[0]);
-            for (const Corners& s : {Corners{p.c[0], m01, m20}, Corners{m01, p.c[1], m12}, Corners{m20, m12, p.c[2]},
-                                     Corners{m01, m12, m20}}) {
+        // Split while the piece is larger than the triangles of B near it (a construction costs about
+        // as many insertions as the sources it spans, a bound one query), and while its centroid is
+        // below L down to a fraction of them: the bounds tighten as pieces shrink until one drops it.
+        const double ratio = p.centre_sq >= threshold() ? kSplitRatio : kFineRatio;
+        if (p.depth < kMaxDepth && longest_edge2(p.c) > ratio * ratio * longest_edge2(B_.corners(p.cand[0]))) {
+            // Points 0-2 are the corners, 3-5 the edge midpoints; each gets its nearest triangle.
+            const Vec3 pt[6] = {p.c[0], p.c[1], p.c[2], 0.5 * (p.c[0] + p.c[1]), 0.5 * (p.c[1] + p.c[2]),
+                                0.5 * (p.c[2] + p.c[0])};
+            uint32_t tri[6] = {p.corner_tri[0], p.corner_tri[1], p.corner_tri[2], 0, 0, 0};
+            for (int k = 3; k < 6; ++k) {
+                VoxelGrid::Nearest q = grid_.nearest(1 - side_, pt[k], tri[k - 3]);
+                atomic_max(L_, q.dist2);
+                tri[k] = q.triangle;
+            }
+            static const int kChild[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
+            for (const auto& ch : kChild) {
                 Piece child = p;  // the parent's bound holds over the child too
-                child.c = s;
+                for (int i = 0; i < 3; ++i) { child.c[i] = pt[ch[i]]; child.corner_tri[i] = tri[ch[i]]; }
                 child.depth = p.depth + 1;
                 child.tightened = false;
                 if (!tighten(child)) return;

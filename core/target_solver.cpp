@@ -210,6 +210,7 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
     std::array<Vec3, 3> sc = source_corners(s);
     SourceProjection proj = project_source(frame_, sc, s);
     inserted_.push_back(s);
+    for (const Vec3& c : sc) source_extent_ = std::max(source_extent_, norm(c - frame_.origin));
     if (!mesh_) { degenerate_maximum(); return; }
     if (watching()) {
         Event e = make_event(EventKind::RegionsProjected);
@@ -352,10 +353,11 @@ double TargetSolver::slack() const {
 }
 
 double TargetSolver::rounding_sq() const {
-    // A quadratic in the frame has coefficients of size (1 + d)^2 for points at frame distance d
-    // from a source (T' has unit size there): one evaluation is off by a few ulps of that.
-    const double d = max_sq_ < HUGE_VAL ? std::sqrt(std::max(0.0, max_sq_)) / frame_.scale : 0.0;
-    return 64 * 0x1p-52 * frame_.scale * frame_.scale * (1 + d) * (1 + d);
+    // A source's quadratic in the frame has coefficients of the size of |w0|^2, w0 running from
+    // the frame's origin to the source's corners (T' itself has unit size): one evaluation is off
+    // by a few ulps of that, whatever the (small) value.
+    const double w = 1 + source_extent_ / frame_.scale;
+    return 64 * 0x1p-52 * frame_.scale * frame_.scale * w * w;
 }
 
 double TargetSolver::direct_d2(Vec2 p) const {

@@ -137,6 +137,7 @@ private:
     Box3 box_;                        // their bounding box
     Vec3 centroid_;
     double reach_ = 0;                // largest distance from the centroid to a point of T'
+    double source_extent_ = 0;        // largest distance from the frame's origin to an inserted source's corner
     TargetFrame frame_;
     std::unique_ptr<DomainMesh> mesh_;
     Phase phase_ = Phase::Begin;

@@ -72,6 +72,16 @@ VoxelGrid::VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double k) {
         std::vector<size_t> pos(offs.begin(), offs.end() - 1);
         for (uint32_t t = 0; t < mesh_[side]->num_triangles(); ++t)
             for_each_voxel_of(side, t, [&](size_t v) { items_[side][pos[v]++] = t; });
+        // Each listed triangle's box beside it, rounded outward to float: nearest() rejects most
+        // triangles from the list alone, without fetching their corners.
+        boxes_[side].resize(items_[side].size());
+        for (size_t k = 0; k < items_[side].size(); ++k) {
+            const Box3 b = mesh_[side]->triangle_bounds(items_[side][k]);
+            for (int i = 0; i < 3; ++i) {
+                boxes_[side][k].lo[i] = std::nextafter((float)b.lo[i], -HUGE_VALF);
+                boxes_[side][k].hi[i] = std::nextafter((float)b.hi[i], HUGE_VALF);
+            }
+        }
     }
     // Occupancy pyramid for far queries.
     pyramid_.push_back({nx, ny, nz, {}});
@@ -186,7 +196,15 @@ VoxelGrid::Nearest VoxelGrid::nearest(int side, const Vec3& p, uint32_t hint) co
         Vec3 lo = origin + Vec3(i, j, k) * s - Vec3(m, m, m);
         if (point_box_distance2(p, lo, lo + Vec3(s + 2 * m, s + 2 * m, s + 2 * m)) > best.dist2) return;
         size_t v = index(i, j, k);
-        for (const uint32_t* t = begin(side, v); t != end(side, v); ++t) consider(*t);
+        const FloatBox* fb = boxes_[side].data() + offs_[side][v];
+        for (const uint32_t* t = begin(side, v); t != end(side, v); ++t, ++fb) {
+            double d2 = 0;
+            for (int a = 0; a < 3; ++a) {
+                const double g = std::max({0.0, fb->lo[a] - p[a], p[a] - fb->hi[a]});
+                d2 += g * g;
+            }
+            if (d2 <= best.dist2) consider(*t);
+        }
     };
     constexpr int kShells = 2;  // shells 0..kShells settle queries near the mesh
     for (int R = 0; R <= kShells; ++R) {

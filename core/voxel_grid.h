@@ -66,6 +66,8 @@ private:
     double margin_ = 0;
     std::vector<size_t> offs_[2];      // CSR: list of voxel v is items_[offs_[v] .. offs_[v+1])
     std::vector<uint32_t> items_[2];
+    struct FloatBox { float lo[3], hi[3]; };
+    std::vector<FloatBox> boxes_[2];   // beside items_: the listed triangle's box, rounded outward
     // Occupancy pyramid: level 0 is the grid, level l+1 halves each dimension (rounding up); a cell
     // is set if any voxel below it lists a triangle of that side.
     struct Level { int nx, ny, nz; std::vector<uint8_t> occ[2]; };

@@ -592,7 +592,6 @@ TEST(Gui, StepNeedsTarget) {
     EXPECT_NE(o.err.find("--step needs --target"), std::string::npos) << o.err;
 }
 
-#endif  // HLENS_GUI
 
 // --event-log opens the event log with the timeline: every event of the target's construction
 // (as many as hlens-cli trace prints, less its final summary line), all shown with no filter.
@@ -1103,3 +1102,5 @@ TEST(Gui, OpeningTheTimelineFramesTheTarget) {
     EXPECT_NEAR(p2[0], p0[0], 1e-5);
     EXPECT_NEAR(p2[1], p0[1], 1e-5);
 }
+
+#endif  // HLENS_GUI
