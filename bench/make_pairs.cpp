@@ -1,25 +1,39 @@
 // Makes the benchmark's mesh pairs with OpenMesh: a simplified copy (quadric decimater), a
-// perturbed copy, or a Loop-subdivided copy of a mesh, written as OBJ.
-//   make_pairs simplify IN OUT FRACTION     keep about FRACTION of the triangles
-//   make_pairs loop IN OUT N                N rounds of Loop subdivision
+// perturbed copy, or a Loop-subdivided copy of a mesh, written as OBJ (used by bench/compare.sh).
+//   make_pairs simplify IN OUT FRACTION      keep about FRACTION of the triangles (quadric error,
+//                                            collapses that flip a face normal refused)
+//   make_pairs loop IN OUT N                 N rounds of Loop subdivision
+//   make_pairs perturb IN OUT AMPLITUDE SEED move every vertex along its normal by u * AMPLITUDE *
+//                                            bounding-box diagonal, u in [-1, 1] pseudo-random
+//                                            from SEED and the vertex index (deterministic)
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
-using Mesh = OpenMesh::TriMesh_ArrayKernelT<>;
+// Double-precision points, so subdivision and perturbation add no float rounding of their own.
+struct Traits : OpenMesh::DefaultTraits {
+    typedef OpenMesh::Vec3d Point;
+    typedef OpenMesh::Vec3d Normal;
+};
+using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
 
 int main(int argc, char** argv) {
-    if (argc != 5) {
-        std::fprintf(stderr, "usage: make_pairs simplify|loop IN OUT ARG\n");
+    std::string op = argc > 1 ? argv[1] : "";
+    if (!((argc == 5 && (op == "simplify" || op == "loop")) || (argc == 6 && op == "perturb"))) {
+        std::fprintf(stderr,
+                     "usage: make_pairs simplify IN OUT FRACTION\n"
+                     "       make_pairs loop IN OUT N\n"
+                     "       make_pairs perturb IN OUT AMPLITUDE SEED\n");
         return 2;
     }
-    std::string op = argv[1];
     Mesh m;
     if (!OpenMesh::IO::read_mesh(m, argv[2])) {
         std::fprintf(stderr, "make_pairs: cannot read %s\n", argv[2]);
@@ -29,7 +43,9 @@ int main(int argc, char** argv) {
         double fraction = std::atof(argv[4]);
         OpenMesh::Decimater::DecimaterT<Mesh> dec(m);
         OpenMesh::Decimater::ModQuadricT<Mesh>::Handle quadric;
+        OpenMesh::Decimater::ModNormalFlippingT<Mesh>::Handle no_flips;  // no folded-over faces
         dec.add(quadric);
+        dec.add(no_flips);
         dec.initialize();
         dec.decimate_to_faces(0, size_t(fraction * m.n_faces()));
         m.garbage_collection();
@@ -38,9 +54,26 @@ int main(int argc, char** argv) {
         loop.attach(m);
         loop(std::atoi(argv[4]));
         loop.detach();
-    } else {
-        std::fprintf(stderr, "make_pairs: unknown operation %s\n", op.c_str());
-        return 2;
+    } else {  // perturb
+        double amplitude = std::atof(argv[4]);
+        uint64_t seed = std::strtoull(argv[5], nullptr, 10);
+        Mesh::Point lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
+        for (auto v : m.vertices()) {
+            lo.minimize(m.point(v));
+            hi.maximize(m.point(v));
+        }
+        double offset = amplitude * (hi - lo).norm();
+        m.request_face_normals();
+        m.request_vertex_normals();
+        m.update_normals();
+        for (auto v : m.vertices()) {
+            uint64_t x = seed * 0x100000000ull + (uint64_t)v.idx() + 0x9E3779B97F4A7C15ull;  // splitmix64
+            x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+            x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+            x ^= x >> 31;
+            double u = (double)(x >> 11) * 0x1.0p-53 * 2.0 - 1.0;
+            m.set_point(v, m.point(v) + m.normal(v) * (u * offset));
+        }
     }
     if (!OpenMesh::IO::write_mesh(m, argv[3], OpenMesh::IO::Options::Default, 17)) {
         std::fprintf(stderr, "make_pairs: cannot write %s\n", argv[3]);
