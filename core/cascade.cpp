@@ -337,8 +337,10 @@ private:
         const double l = threshold();
         std::vector<uint32_t> ties;
         for (uint32_t t = 0; t < n; ++t) {
-            // An upper bound until the target is solved whole below: pieces carry their rounding.
-            out_.bound[t] = std::sqrt(std::max(bound_sq_[t].load(), std::max(best_sq_[t].load(), 0.0)));
+            // An upper bound until the target is solved whole below, widened by the tie margin: the
+            // bounds are exact point-triangle distances, the solver's values carry rounding.
+            const double b = std::sqrt(std::max(bound_sq_[t].load(), std::max(best_sq_[t].load(), 0.0)));
+            out_.bound[t] = b * (1 + kTieMargin) + 1e-11 * (coord_ + 1);
             if (best_sq_[t] >= l) ties.push_back(t);
         }
         parallel_for(ties.size(), threads, opt_.cancel, [&](size_t k) {

@@ -1,5 +1,7 @@
 // Flat shading with a headlight (two-sided), an optional colour map over the per-triangle value,
-// a highlight for the selected triangle, and the three drawing modes of a mesh.
+// a highlight for the selected triangle, and the three drawing modes of a mesh. A negative value
+// means the triangle's exact maximum is not known yet: it is drawn "not yet exact", grey in
+// diagonal stripes (screen space), never on the colour scale.
 #version 330 core
 in vec3 v_position;
 flat in vec3 v_normal;
@@ -12,6 +14,8 @@ uniform int u_use_map;         // 1: colour by v_value through u_colormap over [
 uniform float u_lo;
 uniform float u_hi;
 uniform sampler2D u_colormap;  // 256 x 1, RGB
+uniform float u_hatch;         // stripe period of "not yet exact" triangles (pixels)
+uniform vec2 u_grey;           // their two greys
 uniform int u_selected;        // triangle index to highlight, -1 for none
 uniform int u_mode;            // 0: lit fill, 1: edge overlay (darkened lines), 2: wireframe (unlit lines)
 
@@ -19,8 +23,12 @@ out vec4 frag_color;
 
 void main() {
     vec3 base = u_color;
-    if (u_use_map == 1) {
-        float t = clamp((v_value - u_lo) / max(u_hi - u_lo, 1e-30), 0.0, 1.0);
+    if (u_use_map == 1 && v_value < 0.0) {
+        float s = mod(gl_FragCoord.x + gl_FragCoord.y, u_hatch);
+        base = vec3(s < 0.5 * u_hatch ? u_grey.x : u_grey.y);
+    } else if (u_use_map == 1) {
+        // (a range of one value, e.g. only the tied maxima known yet: they are its top)
+        float t = u_hi > u_lo ? clamp((v_value - u_lo) / (u_hi - u_lo), 0.0, 1.0) : (v_value >= u_hi ? 1.0 : 0.0);
         base = texture(u_colormap, vec2((t * 255.0 + 0.5) / 256.0, 0.5)).rgb;
     }
     bool selected = gl_PrimitiveID == u_selected;

@@ -1,6 +1,6 @@
 // Both meshes: non-indexed triangles (3 vertices per triangle, so gl_PrimitiveID is the triangle
 // index), each vertex carrying its triangle's normal and its triangle's scalar (the per-target
-// maximum of the colour map). Positions are relative to the scene origin.
+// maximum of the colour map; negative: not yet exact). Positions are relative to the scene origin.
 #version 330 core
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;

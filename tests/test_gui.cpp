@@ -60,12 +60,39 @@ constexpr std::array<int, 3> kMapLow = {71, 1, 85};        // viridis at 0
 constexpr std::array<int, 3> kMapHigh = {252, 231, 33};    // viridis at 1
 constexpr std::array<int, 3> kSelected = {255, 64, 217};   // the selected target (1, 0.25, 0.85)
 
+// The scratch directories of the running test. When the test ends they are removed, unless it
+// failed: then they are kept for inspection (screenshots, logs) and their paths printed.
+std::vector<fs::path>& scratch_dirs() {
+    static std::vector<fs::path> dirs;
+    return dirs;
+}
+
+struct ScratchCleanup : ::testing::EmptyTestEventListener {
+    void OnTestEnd(const ::testing::TestInfo& info) override {
+        for (const fs::path& d : scratch_dirs()) {
+            if (info.result()->Failed()) {
+                std::printf("[ info ] kept %s\n", d.c_str());
+            } else {
+                std::error_code ec;
+                fs::remove_all(d, ec);
+            }
+        }
+        scratch_dirs().clear();
+    }
+};
+
+[[maybe_unused]] const bool kScratchCleanupInstalled = [] {
+    ::testing::UnitTest::GetInstance()->listeners().Append(new ScratchCleanup);  // gtest owns it
+    return true;
+}();
+
 fs::path scratch_dir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     fs::path d = fs::temp_directory_path() /
                  ("hlens_gui_" + std::to_string(::getpid()) + "_" + (info ? info->name() : "x"));
     fs::remove_all(d);
     fs::create_directories(d);
+    if (std::find(scratch_dirs().begin(), scratch_dirs().end(), d) == scratch_dirs().end()) scratch_dirs().push_back(d);
     return d;
 }
 
@@ -1101,6 +1128,302 @@ TEST(Gui, OpeningTheTimelineFramesTheTarget) {
     EXPECT_GT(num(home.out, "distance"), 0.9 * num(whole.out, "distance"));
     EXPECT_NEAR(p2[0], p0[0], 1e-5);
     EXPECT_NEAR(p2[1], p0[1], 1e-5);
+}
+
+#endif  // HLENS_GUI
+
+// ---- The exact colour map (issue 7, item 4): the distances show first, then the exact maximum of
+// every triangle fast mode skipped is filled in the background; until then a triangle is drawn
+// "not yet exact" (two greys in diagonal stripes), never coloured by its upper bound.
+#ifdef HLENS_GUI
+#include "target_maxima.h"
+
+namespace {
+
+// The hatch's greys (app/hlens/colormap.h kNotExactGrey 0.62, 0.46) and their ratio.
+constexpr int kHatchLight = 158, kHatchDark = 117;
+
+struct Probe {
+    long triangle = -1;
+    bool exact = false;
+    double value = NAN, bound = NAN;
+    int x = -1, y = -1, clear = 0;
+};
+
+// The "probes" of the state's "exact_colormap": pixels well inside triangles of the measured mesh.
+std::vector<Probe> probes(const std::string& json) {
+    std::vector<Probe> r;
+    const std::string list = raw_value(json, "probes");
+    for (size_t at = list.find("{\"triangle\": "); at != std::string::npos; at = list.find("{\"triangle\": ", at + 1)) {
+        Probe p;
+        p.triangle = (long)num(list, "triangle", at);
+        p.exact = raw_value(list, "exact", at) == "true";
+        p.value = num(list, "value", at);
+        p.bound = num(list, "bound", at);
+        std::vector<double> px = num_list(list, "pixel", at);
+        if (px.size() == 2) p.x = (int)px[0], p.y = (int)px[1];
+        p.clear = (int)num(list, "clear", at);
+        r.push_back(p);
+    }
+    return r;
+}
+
+// Grey: the three channels equal (up to rounding), not black.
+bool grey(const std::array<int, 3>& p) {
+    return std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]}) <= 3 && p[0] > 25;
+}
+
+// The pixels of the square of radius r around (x, y).
+std::vector<std::array<int, 3>> square(const Image& im, int x, int y, int r) {
+    std::vector<std::array<int, 3>> v;
+    for (int yy = y - r; yy <= y + r; ++yy)
+        for (int xx = x - r; xx <= x + r; ++xx)
+            if (xx >= 0 && yy >= 0 && xx < im.w && yy < im.h) v.push_back(im.at(xx, yy));
+    return v;
+}
+
+// The demo pair zoomed in (5 wheel steps at the view's centre) so its triangles are large enough
+// for a probe's square to hold both stripes of the hatch.
+const std::vector<std::string> kZoomed = {"--wheel", "550,300,5"};
+
+std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+}  // namespace
+
+// Fill-in disabled: fast mode solved only the triangles that can reach h(A,B); every other one is
+// grey and hatched (both greys, equal channels, their ratio), not on the colour scale, and the
+// exact ones are coloured (the tied maxima: the top of the map). The legend shows the hatch.
+TEST(GuiExactMap, OffDrawsSkippedTrianglesNotYetExact) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "off.png";
+    Outcome o = run_gui(with({"--exact-colormap", "off"}, kZoomed), png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t em = o.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos) << o.out;
+    EXPECT_EQ(raw_value(o.out, "mode", em), "\"off\"");
+    // Only fast mode's exact triangles are known (which ones besides the maxima may depend on
+    // the timing of its threads): on the demo pair, few.
+    const long fast_exact = (long)num(o.out, "exact", em);
+    EXPECT_GE(fast_exact, 1);
+    EXPECT_LT(fast_exact, 512 / 4) << "the demo pair: fast mode skips most triangles";
+    EXPECT_EQ((long)num(o.out, "triangles", em), 512);
+    EXPECT_EQ(raw_value(o.out, "complete", em), "false");
+    EXPECT_EQ(raw_value(o.out, "running", em), "false");
+    EXPECT_EQ(raw_value(o.out, "complete_at", em), "null");
+    CliDistance cli = cli_distance(dir);
+    EXPECT_NEAR(num(o.out, "a_to_b"), cli.a_to_b, 1e-12);
+    // The range is that of the exact values only: here the tied maxima, h(A,B) (as a float).
+    EXPECT_NEAR(num(o.out, "hi", em), cli.a_to_b, 1e-7);
+    EXPECT_NEAR(num(o.out, "lo", em), cli.a_to_b, 1e-7) << "a bound must not stretch the range";
+
+    Image im = load_png(png);
+    ASSERT_EQ(im.w, 800);
+    std::vector<Probe> ps = probes(o.out);
+    int not_exact = 0, exact = 0;
+    for (const Probe& p : ps) {
+        ASSERT_GE(p.x, 0);
+        ASSERT_GE(p.clear, 2);
+        const int r = std::min(p.clear, 6);
+        std::vector<std::array<int, 3>> px = square(im, p.x, p.y, r);
+        if (!p.exact) {
+            ++not_exact;
+            EXPECT_TRUE(std::isnan(p.value));
+            EXPECT_GT(p.bound, 0) << "fast mode has a bound for it, which must not be shown";
+            // Every pixel grey; two levels (the stripes), both present, in the hatch's ratio.
+            int lo = 255, hi = 0;
+            for (const auto& c : px) {
+                EXPECT_TRUE(grey(c)) << "triangle " << p.triangle << " at " << p.x << "," << p.y << ": " << c[0] << " "
+                                     << c[1] << " " << c[2];
+                lo = std::min(lo, c[0]);
+                hi = std::max(hi, c[0]);
+            }
+            if (p.clear >= 4) {   // the square spans a stripe period (8 pixels at this font size)
+                EXPECT_NEAR(double(hi) / std::max(lo, 1), double(kHatchLight) / kHatchDark, 0.12)
+                    << "triangle " << p.triangle << ": the two greys of the hatch";
+                const int mid = (lo + hi) / 2;
+                const long light = std::count_if(px.begin(), px.end(), [&](auto c) { return c[0] > mid; });
+                EXPECT_GT(light, (long)px.size() / 5);
+                EXPECT_LT(light, (long)px.size() * 4 / 5);
+            }
+        } else {
+            ++exact;
+            EXPECT_NEAR(p.value, cli.a_to_b, 1e-12) << "fast mode's exact triangles here are the tied maxima";
+            const long top = std::count_if(px.begin(), px.end(), [](auto c) { return shaded(c, kMapHigh, 12); });
+            EXPECT_GT(top, (long)px.size() * 3 / 4) << "exact triangle " << p.triangle << " is coloured at once";
+        }
+    }
+    EXPECT_GE(not_exact, 2) << o.out;
+    EXPECT_GE(exact, 1) << o.out;
+    // Most of the mesh is grey, hatched; nothing is a bright spot but the exact maxima (few pixels).
+    std::vector<int> vp = int_list(o.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u);
+    const int y0 = vp[3] / 6, y1 = vp[3] * 9 / 10;
+    const int greys = count(im, vp[0], y0, im.w, y1, [](auto p) { return grey(p); });
+    EXPECT_GT(greys, (im.w - vp[0]) * (y1 - y0) / 3);
+    // The legend shows the hatch, unlit, in the sidebar.
+    EXPECT_GT(count(im, 0, 0, vp[0], im.h, [](auto p) { return near(p, {kHatchLight, kHatchLight, kHatchLight}, 2); }), 20);
+    EXPECT_GT(count(im, 0, 0, vp[0], im.h, [](auto p) { return near(p, {kHatchDark, kHatchDark, kHatchDark}, 2); }), 20);
+}
+
+// Waiting for the fill-in: every triangle is exact, nothing is grey, the range is the exact
+// values' (core's exact_target_maxima), and a triangle's colour is its exact value through the
+// colour map (read from the colour bar in the same picture), not a colour elsewhere on the map.
+TEST(GuiExactMap, WaitColoursEveryTriangleByItsExactMaximum) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "wait.png";
+    Outcome o = run_gui(with({"--exact-colormap", "wait"}, kZoomed), png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t em = o.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos) << o.out;
+    EXPECT_EQ((long)num(o.out, "exact", em), 512);
+    EXPECT_EQ((long)num(o.out, "triangles", em), 512);
+    EXPECT_EQ(raw_value(o.out, "complete", em), "true");
+
+    // The exact per-triangle maxima, computed here by the core.
+    hlens::TriangleMesh A = hlens::load_mesh(kDemoA), B = hlens::load_mesh(kDemoB);
+    hlens::VoxelGrid grid(A, B);
+    hlens::TargetMaxima exact = hlens::exact_target_maxima(grid, 0);
+    ASSERT_EQ(exact.max.size(), 512u);
+    const double lo = *std::min_element(exact.max.begin(), exact.max.end());
+    const double hi = *std::max_element(exact.max.begin(), exact.max.end());
+    EXPECT_NEAR(num(o.out, "lo", em), lo, 1e-7 * hi);
+    EXPECT_NEAR(num(o.out, "hi", em), hi, 1e-7 * hi);
+    EXPECT_NEAR(hi, cli_distance(dir).a_to_b, 1e-12);
+
+    Image im = load_png(png);
+    ASSERT_EQ(im.w, 800);
+    std::vector<int> bar = int_list(o.out, "bar");
+    ASSERT_EQ(bar.size(), 4u);
+    ASSERT_GT(bar[2], 100);
+    // The colour bar's colour at t in [0, 1] (its middle row).
+    auto bar_colour = [&](double t) {
+        return im.at(bar[0] + 1 + (int)std::lround(std::clamp(t, 0.0, 1.0) * (bar[2] - 3)), bar[1] + bar[3] / 2);
+    };
+    std::vector<Probe> ps = probes(o.out);
+    ASSERT_GE(ps.size(), 3u) << o.out;
+    for (const Probe& p : ps) {
+        ASSERT_GE(p.triangle, 0);
+        ASSERT_LT(p.triangle, 512);
+        EXPECT_TRUE(p.exact);
+        EXPECT_EQ(p.value, exact.max[p.triangle]) << "triangle " << p.triangle;
+        const double t = (p.value - lo) / (hi - lo);
+        const std::array<int, 3> want = bar_colour(t), other = bar_colour(t < 0.5 ? t + 0.4 : t - 0.4);
+        std::vector<std::array<int, 3>> px = square(im, p.x, p.y, std::min(p.clear, 4));
+        const long match = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, want, 12); });
+        const long wrong = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, other, 12); });
+        EXPECT_GT(match, (long)px.size() * 3 / 4)
+            << "triangle " << p.triangle << " (t = " << t << ") at " << p.x << "," << p.y << ": " << im.at(p.x, p.y)[0]
+            << " " << im.at(p.x, p.y)[1] << " " << im.at(p.x, p.y)[2] << " vs " << want[0] << " " << want[1] << " " << want[2];
+        EXPECT_LT(wrong, (long)px.size() / 4) << "triangle " << p.triangle << " looks like t = " << (t < 0.5 ? t + 0.4 : t - 0.4);
+    }
+    // No triangle is left grey (the hatch's greys do not appear on the mesh).
+    std::vector<int> vp = int_list(o.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u);
+    const int y0 = vp[3] / 6, y1 = vp[3] * 9 / 10;
+    EXPECT_LT(count(im, vp[0], y0, im.w, y1, [](auto p) { return grey(p) && p[0] > 90; }), 60);
+}
+
+// The distances do not wait for the exact colour map: they are shown when the fast computation
+// ends, and the fill-in completes later; a screenshot taken as soon as the distances are known
+// has them (hlens-cli's), with the map still being filled or complete, and its picture agrees.
+TEST(GuiExactMap, DistancesShowBeforeTheFillInCompletes) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "order.png";
+    CliDistance cli = cli_distance(dir);
+    // h(B,A) of the demo: 32 large triangles of B over the bumpy A, slow to solve exactly.
+    Outcome w = run_gui({"--direction", "ba", "--exact-colormap", "wait"}, png, dir);
+    ASSERT_EQ(w.code, 0) << w.err;
+    const size_t wem = w.out.find("\"exact_colormap\"");
+    ASSERT_NE(wem, std::string::npos);
+    const double shown = num(w.out, "distances_at"), complete = num(w.out, "complete_at", wem);
+    ASSERT_TRUE(std::isfinite(shown)) << w.out;
+    ASSERT_TRUE(std::isfinite(complete)) << w.out;
+    EXPECT_LT(shown, complete) << "the distances were shown only with the complete colour map";
+    EXPECT_NEAR(num(w.out, "b_to_a"), cli.b_to_a, 1e-12);
+
+    Outcome o = run_gui({"--direction", "ba", "--exact-colormap", "on"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t em = o.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos);
+    EXPECT_NEAR(num(o.out, "a_to_b"), cli.a_to_b, 1e-12);
+    EXPECT_NEAR(num(o.out, "b_to_a"), cli.b_to_a, 1e-12);
+    EXPECT_NEAR(num(o.out, "hausdorff"), cli.hausdorff, 1e-12);
+    const long n = (long)num(o.out, "triangles", em), known = (long)num(o.out, "exact", em);
+    EXPECT_EQ(n, 32);
+    EXPECT_GE(known, 1);   // at least the witness
+    EXPECT_LE(known, n);
+    const bool done = raw_value(o.out, "complete", em) == "true";
+    EXPECT_EQ(done, known == n);
+    // Not complete: it is still running (not stalled) and the picture shows grey triangles.
+    if (!done) {
+        EXPECT_EQ(raw_value(o.out, "running", em), "true");
+    }
+    Image im = load_png(png);
+    std::vector<int> vp = int_list(o.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u);
+    const int greys = count(im, vp[0], vp[3] / 6, im.w, vp[3] * 9 / 10, [](auto p) { return grey(p) && p[0] > 90; });
+    if (done) {
+        EXPECT_LT(greys, 60);
+    } else {
+        EXPECT_GT(greys, 200);
+    }
+    std::printf("[ info ] screenshot as soon as the distances were known (%.2f s): %ld / %ld triangles exact\n",
+                num(o.out, "distances_at"), known, n);
+}
+
+// The sidebar's Cancel stops the fill-in (the values found so far stay, the rest stays grey) and
+// Continue, in the same place, finishes it. (800x600 demo, B measured: the button's position.)
+TEST(GuiExactMap, CancelStopsTheFillInAndContinueFinishesIt) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "cancel.png";
+    const std::string button = "240,461";
+    Outcome c = run_gui({"--direction", "ba", "--exact-colormap", "wait", "--click", button}, png, dir);
+    ASSERT_EQ(c.code, 0) << c.err;
+    size_t em = c.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos);
+    EXPECT_EQ(raw_value(c.out, "stopped", em), "true") << c.out;
+    EXPECT_EQ(raw_value(c.out, "complete", em), "false");
+    EXPECT_EQ(raw_value(c.out, "running", em), "false");
+    EXPECT_LT((long)num(c.out, "exact", em), 32);
+    Image im = load_png(png);
+    std::vector<int> vp = int_list(c.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u);
+    EXPECT_GT(count(im, vp[0], vp[3] / 6, im.w, vp[3] * 9 / 10, [](auto p) { return grey(p) && p[0] > 90; }), 200)
+        << "the triangles not reached stay not yet exact";
+
+    Outcome r = run_gui({"--direction", "ba", "--exact-colormap", "wait", "--click", button, "--wait", "3", "--click", button},
+                        png, dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    em = r.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos);
+    EXPECT_EQ(raw_value(r.out, "stopped", em), "false") << r.out;
+    EXPECT_EQ(raw_value(r.out, "complete", em), "true");
+    EXPECT_EQ((long)num(r.out, "exact", em), 32);
+}
+
+// Switching the direction ("Measure: B to A") fills in the other mesh's map.
+TEST(GuiExactMap, SwitchingTheDirectionFillsInTheOtherMesh) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "switch.png";
+    Outcome o = run_gui({"--exact-colormap", "wait", "--click", "150,297"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(raw_value(o.out, "direction"), "\"ba\"");
+    const size_t em = o.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos);
+    EXPECT_EQ((long)num(o.out, "triangles", em), 32);
+    EXPECT_EQ((long)num(o.out, "exact", em), 32);
+    // Its range is h(B,A)'s exact values: the top is h(B,A).
+    EXPECT_NEAR(num(o.out, "hi", em), cli_distance(dir).b_to_a, 1e-7);
+}
+
+TEST(GuiExactMap, BadModeIsAUsageError) {
+    fs::path dir = scratch_dir();
+    Outcome o = run({kGui, "--exact-colormap", "maybe"}, dir);
+    EXPECT_EQ(o.code, 2);
+    EXPECT_NE(o.err.find("--exact-colormap expects on, off or wait"), std::string::npos) << o.err;
 }
 
 #endif  // HLENS_GUI

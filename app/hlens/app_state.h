@@ -18,14 +18,32 @@ struct AppError {
     std::string reason;
 };
 
+// The colour map's range: the exact values known so far (never a bound). It follows them as the
+// fill-in brings more, until the user moves it ("Reset" makes it follow again).
 struct ColourRange {
     float lo = 0, hi = 1;         // current range of the colour map
     float data_lo = 0, data_hi = 1;
     bool valid = false;
 };
 
+// The exact colour map of one direction: the exact maximum distance over each triangle of the
+// measured mesh, known at once where fast mode solved the triangle, then filled in by the
+// background job (ExactMapJob); a triangle not yet known is drawn "not yet exact" (grey, hatched).
+struct ExactMap {
+    std::vector<double> value;    // per triangle: the exact maximum distance, -1 while not yet exact
+    size_t exact = 0;             // how many values are known
+    bool stopped = false;         // the user cancelled its fill-in: not restarted until asked
+    std::string failed;           // the fill-in failed (why); not restarted
+    double complete_at = -1;      // when every value was known (seconds, as AppState::distances_at)
+    bool complete() const { return exact == value.size(); }   // (also for a mesh without triangles)
+    bool known(long t) const { return t >= 0 && (size_t)t < value.size() && value[t] >= 0; }
+};
+
+enum class ExactMode { Off, On, Wait };   // --exact-colormap off|on|wait
+
 struct Requests {
     bool cancel = false, recompute = false, home = false, screenshot = false, clear_errors = false;
+    bool exact_cancel = false, exact_resume = false;   // stop / continue the exact colour map's fill-in
     bool focus = false;           // frame the selected target and the sphere of its largest distance
     int set_direction = -1;
     long select = -2;             // -2: nothing; -1: clear the selection; >= 0: select that target
@@ -60,6 +78,15 @@ struct AppState {
 
     MeshStyle style[2];
     ColourRange range[2];
+    ExactMap exact[2];            // per direction, like range
+    ExactMode exact_mode = ExactMode::On;
+    // The fill-in job, filled by the loop each frame (its progress is exact[exact_side].exact).
+    bool exact_running = false;
+    int exact_side = 0;
+    double distances_at = -1;     // seconds from start-up (or Recompute) until the distances showed
+    // Where the colour bar was drawn (window coordinates: x, y, w, h), for the headless state.
+    float colour_bar_rect[4] = {0, 0, 0, 0};
+    ViewRect target_window;       // the target panel over the 3D view (window coordinates)
     bool show_witness[2] = {true, true};
     bool show_colormap = true;
     int up_axis = 2;

@@ -10,6 +10,7 @@ namespace hlens::gui {
 const char* usage_text() {
     return "usage: hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]\n"
            "             [--step N|end] [--event-log] [--graph] [--overlay] [--case NAME [--epsilon E]] [--export-case DIR]\n"
+           "             [--exact-colormap on|off|wait]\n"
            "\n"
            "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
            "(assets/demo_a.obj, assets/demo_b.obj).\n"
@@ -29,6 +30,13 @@ const char* usage_text() {
            "  --size WxH          window size in pixels (default 1280x800)\n"
            "  --screenshot PATH   headless: wait for the computation, render, write a PNG, print the\n"
            "                      state as one JSON line on stdout and exit (0; 2 on bad input)\n"
+           "  --exact-colormap on|off|wait\n"
+           "                      after the distances, the exact maximum of every triangle the fast\n"
+           "                      computation skipped is filled into the colour map in the background\n"
+           "                      (on, the default); until then a triangle is grey and hatched, \"not\n"
+           "                      yet exact\". off: never fill in; wait: with --screenshot, the picture\n"
+           "                      waits until every triangle is exact (the default of --screenshot;\n"
+           "                      with on it is taken as soon as the distances are known)\n"
            "\n"
            "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --right-drag X0,Y0,X1,Y1,\n"
            "  --wheel X,Y,STEPS, --hover X,Y, --wait FRAMES, --key home|f1|f12|left|right|space\n"
@@ -147,6 +155,12 @@ Options parse_args(const std::vector<std::string>& args) {
             o.input.push_back({InputAction::Hover, v[0], v[1], 40, 0});
         } else if (a == "--wait") {
             o.input.push_back({InputAction::Wait, 0, 0, (float)parse_long(value(), a), 0});
+        } else if (a == "--exact-colormap") {
+            const std::string& v = value();
+            if (v == "off") o.exact_colormap = 0;
+            else if (v == "on") o.exact_colormap = 1;
+            else if (v == "wait") o.exact_colormap = 2;
+            else throw UsageError("--exact-colormap expects on, off or wait, got '" + v + "'");
         } else if (a == "--layout-file") {
             o.layout_file = value();
         } else if (a == "--dpi-scale") {

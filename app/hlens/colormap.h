@@ -12,4 +12,10 @@ using Rgb8 = std::array<uint8_t, 3>;
 const std::array<Rgb8, kColormapSize>& colormap_table();
 Rgb8 colormap(double t);   // t in [0, 1], clamped; nearest table entry
 
+// A triangle whose exact maximum is not yet known is drawn "not yet exact": neutral grey in
+// diagonal stripes of these two greys (no colour of the map is grey), never on the colour scale.
+constexpr float kNotExactGrey[2] = {0.62f, 0.46f};
+// The stripes' period in pixels for a font size (so they follow DPI scaling).
+inline float hatch_period(float font_px) { return font_px * 0.6f < 6.0f ? 6.0f : font_px * 0.6f; }
+
 }  // namespace hlens::gui

@@ -127,6 +127,55 @@ std::optional<ComputeOutput> ComputeJob::take_result() {
     return r;
 }
 
+// ---------------------------------------------------------------- ExactMapJob
+
+void ExactMapJob::start(std::shared_ptr<const LoadedScene> scene, int side, std::vector<uint32_t> order) {
+    stop();   // the previous run's thread is joined before its state is reset
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        values_.clear();
+        ended_ = false;
+    }
+    scene_ = scene;
+    side_ = side;
+    total_ = order.size();
+    solved_.store(0);
+    launch([this, scene, side, order = std::move(order)]() mutable {
+        set_phase("exact colour map");
+        try {
+            TargetMaximaOptions opt;
+            opt.cancel = &cancel_flag();
+            opt.order = std::move(order);
+            opt.progress = [this](double f) { set_progress(f); };
+            opt.on_target = [this](uint32_t t, double d) {
+                std::lock_guard<std::mutex> lock(mutex_);
+                values_.emplace_back(t, d);
+                solved_.fetch_add(1);
+            };
+            if (!opt.order.empty()) exact_target_maxima(*scene->grid, side, opt);
+            set_phase(cancel_flag().load() ? "Cancelled" : "Done");
+        } catch (const std::exception& e) {   // never let an exception escape the thread
+            set_phase(std::string("failed: ") + e.what());
+        }
+        std::lock_guard<std::mutex> lock(mutex_);
+        ended_ = true;
+    });
+}
+
+std::vector<std::pair<uint32_t, double>> ExactMapJob::take_values() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::pair<uint32_t, double>> v;
+    v.swap(values_);
+    return v;
+}
+
+bool ExactMapJob::take_ended() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!ended_ || !values_.empty()) return false;
+    ended_ = false;
+    return true;
+}
+
 // ---------------------------------------------------------------- TraceJob
 
 void TraceJob::start(std::shared_ptr<const LoadedScene> scene, int side, uint32_t target) {

@@ -1,4 +1,5 @@
-// Background jobs of the debugger: loading + the whole-mesh computation, and one target's trace.
+// Background jobs of the debugger: loading + the whole-mesh computation, the exact colour map's
+// fill-in, and one target's trace.
 //
 // Each job runs on its own std::thread; the UI thread only polls (progress(), phase(), take_*()),
 // so the window stays responsive. Results are handed over once, by value or shared_ptr, under a
@@ -17,6 +18,7 @@
 
 #include "hausdorff.h"
 #include "mesh.h"
+#include "target_maxima.h"
 #include "target_solver.h"
 #include "voxel_grid.h"
 
@@ -96,6 +98,33 @@ private:
     void start_impl(const std::string& path_a, const std::string& path_b, std::shared_ptr<std::array<TriangleMesh, 2>> given);
     std::shared_ptr<const LoadedScene> scene_;
     std::optional<ComputeOutput> result_;
+};
+
+// The exact colour map's fill-in: after the fast distances are shown, the exact maximum over every
+// target of mesh `side` that fast mode skipped (exact_target_maxima, target_maxima.h), largest
+// upper bound first. Values are handed over as they come (take_values, polled every frame), so
+// the picture fills in while the job runs; cancelling keeps the values found so far.
+class ExactMapJob : public Worker {
+public:
+    ~ExactMapJob() override { stop(); }
+    // `order`: the targets still to solve, in order. Replaces (cancels) a previous run.
+    void start(std::shared_ptr<const LoadedScene> scene, int side, std::vector<uint32_t> order);
+    int side() const { return side_; }
+    const LoadedScene* scene() const { return scene_.get(); }
+    size_t total() const { return total_; }
+    size_t solved() const { return solved_.load(); }
+    // The exact values found since the last call: (target, max distance).
+    std::vector<std::pair<uint32_t, double>> take_values();
+    // The run has ended (finished or cancelled); true once per run, after its last values.
+    bool take_ended();
+
+private:
+    std::shared_ptr<const LoadedScene> scene_;   // keeps the grid alive while the job runs
+    std::vector<std::pair<uint32_t, double>> values_;
+    std::atomic<size_t> solved_{0};
+    size_t total_ = 0;
+    int side_ = 0;
+    bool ended_ = false;
 };
 
 // One target T' of mesh `side` against the other mesh: what the target panel shows.

@@ -8,9 +8,11 @@
 // Interactive runs keep the floating windows' layout in ~/.config/hlens/imgui.ini
 // ($XDG_CONFIG_HOME/hlens/); the sidebar, target and error windows are placed every frame.
 // Headless (--screenshot PATH): vsync off, no imgui.ini; the loop waits for the computation (and
-// the trace of --target), lets ImGui settle for a few frames, reads the back buffer into a PNG
-// before swapping, prints the state as one JSON line on stdout and exits (0, or 2 on bad input).
+// the trace of --target, and the exact colour map's fill-in unless --exact-colormap on|off), lets
+// ImGui settle for a few frames, reads the back buffer into a PNG before swapping, prints the state
+// as one JSON line on stdout and exits (0, or 2 on bad input).
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cfloat>
 #include <cinttypes>
@@ -21,6 +23,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <thread>
 #include <vector>
@@ -36,12 +39,14 @@
 #include "camera.h"
 #include "case_export.h"
 #include "cases.h"
+#include "colormap.h"
 #include "compute.h"
 #include "gl.h"
 #include "panels.h"
 #include "picking.h"
 #include "scene.h"
 #include "screenshot.h"
+#include "target_maxima.h"
 
 #ifndef HLENS_ASSET_DIR
 #define HLENS_ASSET_DIR "assets"
@@ -128,19 +133,158 @@ std::string json_number(double v) {
     return buf;
 }
 
+// ---- The exact colour map (per direction): fast mode's exact values, then the fill-in's.
+
+// The colour map's range: the exact values known so far (never a bound). It follows them while
+// the user has not moved it (or always, with `reset`).
+void refresh_range(AppState& s, int d, bool reset) {
+    ColourRange& r = s.range[d];
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (double v : s.exact[d].value)
+        if (v >= 0) lo = std::min(lo, v), hi = std::max(hi, v);
+    const bool follow = reset || !r.valid || (r.lo == r.data_lo && r.hi == r.data_hi);
+    r.valid = lo <= hi;
+    if (!r.valid) return;
+    r.data_lo = (float)lo;
+    r.data_hi = (float)hi;
+    if (follow) {
+        r.lo = r.data_lo;
+        r.hi = r.data_hi;
+    }
+}
+
+// Direction d's map as fast mode left it: exact where it solved the triangle, unknown elsewhere.
+void init_exact(AppState& s, int d) {
+    const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+    ExactMap& m = s.exact[d];
+    m = ExactMap{};
+    m.value.assign(r.target_max.size(), -1.0);
+    for (size_t t = 0; t < m.value.size(); ++t)
+        if (t < r.target_exact.size() && r.target_exact[t] && r.target_max[t] >= 0) {
+            m.value[t] = r.target_max[t];
+            ++m.exact;
+        }
+}
+
+// A newly known exact value (from the fill-in or a finished trace); false if it was known.
+bool set_exact(AppState& s, int d, uint32_t t, double v) {
+    ExactMap& m = s.exact[d];
+    if (t >= m.value.size() || m.value[t] >= 0 || !(v >= 0)) return false;
+    m.value[t] = v;
+    ++m.exact;
+    return true;
+}
+
+// The best known maximum over target t of direction d: exact if known, else fast mode's bound.
+double target_value(const AppState& s, int d, long t, bool& exact) {
+    const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+    exact = s.exact[d].known(t);
+    if (exact) return s.exact[d].value[t];
+    return t >= 0 && (size_t)t < r.target_max.size() ? r.target_max[t] : NAN;
+}
+
+// Sample pixels of the measured mesh for the headless state: up to `per_kind` triangles not yet
+// exact and as many exact ones, each with a pixel (image coordinates, from the top-left) and a
+// radius `clear` >= 2 such that the square of that radius around it shows only that triangle: no
+// edge of it (lines are kept 2 pixels away), no other mesh in front, no panel, witness marker or
+// hint text over it. The triangles with the largest such squares first (radius up to `max_clear`).
+std::string probes_json(const AppState& s, const std::vector<int>& ids, const int vp[4], int fb_h, const glm::mat4& mvp,
+                        const Scene& scene, float fbs, int max_clear, int per_kind) {
+    const int d = s.direction, w = vp[2], h = vp[3];
+    const int kmax = max_clear + 2;
+    // Excluded (image coordinates): the target panel, the witness markers (segment, points and
+    // label, as draw_view_overlay draws them, with a margin), the hint line.
+    const float fs = ImGui::GetFontSize() * fbs;
+    std::vector<std::array<float, 4>> rects;   // x0, y0, x1, y1
+    std::vector<std::array<float, 4>> segments;
+    const ViewRect& tw = s.target_window;
+    rects.push_back({tw.x * fbs, tw.y * fbs, (tw.x + tw.w) * fbs, (tw.y + tw.h) * fbs});
+    rects.push_back({0, (s.view.y + s.view.h - 2.2f * ImGui::GetFontSize()) * fbs, 1e9f, 1e9f});
+    if (s.computed)
+        for (int dd = 0; dd < 2; ++dd) {
+            if (!s.show_witness[dd]) continue;
+            const OneSidedResult& r = dd == 0 ? s.result.a_to_b : s.result.b_to_a;
+            float q[2][2];
+            bool ok = true;
+            for (int k = 0; k < 2 && ok; ++k) {
+                glm::vec4 c = mvp * glm::vec4(scene.local(k == 0 ? r.from_point : r.to_point), 1.0f);
+                ok = c.w > 1e-7f;
+                q[k][0] = vp[0] + (0.5f + 0.5f * c.x / c.w) * w;
+                q[k][1] = fb_h - vp[1] - (0.5f + 0.5f * c.y / c.w) * h;
+            }
+            if (!ok) continue;
+            segments.push_back({q[0][0], q[0][1], q[1][0], q[1][1]});
+            const float rr = 0.38f * fs;   // the label's box (draw_view_overlay)
+            const ImVec2 ls = ImGui::CalcTextSize("h(A,B)");
+            rects.push_back({q[0][0] + 1.6f * rr - 4, q[0][1] - 2.6f * rr - 2, q[0][0] + 1.6f * rr + ls.x * fbs + 4,
+                             q[0][1] - 2.6f * rr + ls.y * fbs + 2});
+        }
+    auto excluded = [&](float x, float y, int m) {
+        for (const auto& b : rects)
+            if (x >= b[0] - m && x < b[2] + m && y >= b[1] - m && y < b[3] + m) return true;
+        for (const auto& g : segments) {   // within a marker's radius (plus the square) of the segment
+            const float dx = g[2] - g[0], dy = g[3] - g[1], len2 = dx * dx + dy * dy;
+            const float u = len2 > 0 ? std::clamp(((x - g[0]) * dx + (y - g[1]) * dy) / len2, 0.0f, 1.0f) : 0.0f;
+            if (std::hypot(x - g[0] - u * dx, y - g[1] - u * dy) < 0.6f * fs + 1.5f * m) return true;
+        }
+        return false;
+    };
+    struct Best { int k = 0, x = 0, y = 0; };   // the largest clear square of a triangle (first found)
+    std::map<int, Best> best;
+    const long sel = s.selected[d];
+    for (int y = 0; y < h; y += 2)
+        for (int x = 0; x < w; x += 2) {
+            const int t = ids[(size_t)y * w + x];
+            if (t < 0 || t == sel) continue;
+            // Grow the square ring by ring while it stays inside the view and on triangle t.
+            int k = 0;
+            for (bool ok = true; ok && k < kmax && x - k - 1 >= 0 && y - k - 1 >= 0 && x + k + 1 < w && y + k + 1 < h;) {
+                const int r = k + 1;
+                for (int i = -r; i <= r && ok; ++i)
+                    ok = ids[(size_t)(y - r) * w + x + i] == t && ids[(size_t)(y + r) * w + x + i] == t &&
+                         ids[(size_t)(y + i) * w + x - r] == t && ids[(size_t)(y + i) * w + x + r] == t;
+                if (ok) k = r;
+            }
+            const int ix = vp[0] + x, iy = fb_h - 1 - (vp[1] + y);
+            if (k < 4 || excluded((float)ix, (float)iy, k)) continue;
+            Best& b = best[t];
+            if (k > b.k) b = Best{k, ix, iy};
+        }
+    std::vector<std::pair<int, int>> order;   // (-clear, triangle)
+    for (const auto& [t, b] : best) order.emplace_back(-b.k, t);
+    std::sort(order.begin(), order.end());
+    const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+    std::string j = "[";
+    int taken[2] = {0, 0};
+    for (const auto& [negk, t] : order) {
+        const bool exact = s.exact[d].known(t);
+        if (taken[exact] >= per_kind) continue;
+        ++taken[exact];
+        const Best& b = best[t];
+        if (j.size() > 1) j += ", ";
+        j += "{\"triangle\": " + std::to_string(t) + ", \"exact\": " + (exact ? "true" : "false") +
+             ", \"value\": " + (exact ? json_number(s.exact[d].value[t]) : "null") +
+             ", \"bound\": " + ((size_t)t < r.target_max.size() ? json_number(r.target_max[t]) : "null") +
+             ", \"pixel\": [" + std::to_string(b.x) + ", " + std::to_string(b.y) + "], \"clear\": " + std::to_string(b.k - 2) + "}";
+    }
+    return j + "]";
+}
+
 // The state behind a headless picture, one JSON line.
-std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin, int fb_w, int fb_h, const int vp[4]) {
+std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin, int fb_w, int fb_h, const int vp[4],
+                       const std::string& probes) {
     const int d = s.direction;
     const long t = s.selected[d];
-    const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
     const TraceSummary* tr = t >= 0 && s.trace[d] && s.trace[d]->target == (uint32_t)t ? &*s.trace[d] : nullptr;
     std::string j = "{\"direction\": \"";
     j += d == 0 ? "ab" : "ba";
     j += "\", \"target\": " + (t >= 0 ? std::to_string(t) : std::string("null"));
-    j += ", \"target_max\": " + (t >= 0 && s.computed && (size_t)t < r.target_max.size() ? json_number(r.target_max[t]) : "null");
-    j += ", \"target_exact\": " + std::string(t >= 0 && s.computed && (size_t)t < r.target_exact.size()
-                                                  ? (r.target_exact[t] ? "true" : "false")
-                                                  : "null");
+    bool t_exact = false;
+    const double t_value = t >= 0 && s.computed ? target_value(s, d, t, t_exact) : NAN;
+    // target_max: the exact maximum over the target once known (fast mode, fill-in or trace),
+    // before that fast mode's upper bound (target_exact false).
+    j += ", \"target_max\": " + (t >= 0 && s.computed ? json_number(t_value) : "null");
+    j += ", \"target_exact\": " + std::string(t >= 0 && s.computed && std::isfinite(t_value) ? (t_exact ? "true" : "false") : "null");
     j += ", \"insertions\": " + (tr ? std::to_string(tr->insertions) : std::string("null"));
     j += ", \"domains\": " + (tr ? std::to_string(tr->domains) : std::string("null"));
     j += ", \"arcs\": " + (tr ? std::to_string(tr->arcs) : std::string("null"));
@@ -149,6 +293,26 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
     j += ", \"a_to_b\": " + (s.computed ? json_number(s.result.a_to_b.distance) : "null");
     j += ", \"b_to_a\": " + (s.computed ? json_number(s.result.b_to_a.distance) : "null");
     j += ", \"hausdorff\": " + (s.computed ? json_number(s.result.hausdorff) : "null");
+    // Seconds from start-up until the distances showed (null: not yet).
+    j += ", \"distances_at\": " + (s.distances_at >= 0 ? json_number(s.distances_at) : "null");
+    {   // The exact colour map of the measured mesh, its range and where the colour bar is.
+        const ExactMap& m = s.exact[d];
+        const ColourRange& r = s.range[d];
+        const char* mode = s.exact_mode == ExactMode::Off ? "off" : s.exact_mode == ExactMode::On ? "on" : "wait";
+        const float fx = ImGui::GetIO().DisplayFramebufferScale.x;
+        j += ", \"exact_colormap\": {\"mode\": \"" + std::string(mode) + "\", \"exact\": " + std::to_string(m.exact) +
+             ", \"triangles\": " + std::to_string(m.value.size()) + ", \"complete\": " + (m.complete() ? "true" : "false") +
+             ", \"running\": " + (s.exact_running && s.exact_side == d ? "true" : "false") +
+             ", \"stopped\": " + (m.stopped ? "true" : "false") + ", \"complete_at\": " + (m.complete_at >= 0 ? json_number(m.complete_at) : "null") +
+             ", \"shown\": " + (s.show_colormap && r.valid ? "true" : "false") +
+             ", \"lo\": " + (r.valid ? json_number(r.lo) : "null") + ", \"hi\": " + (r.valid ? json_number(r.hi) : "null") +
+             ", \"bar\": [" + std::to_string((int)std::lround(s.colour_bar_rect[0] * fx)) + ", " +
+             std::to_string((int)std::lround(s.colour_bar_rect[1] * fx)) + ", " +
+             std::to_string((int)std::lround(s.colour_bar_rect[2] * fx)) + ", " +
+             std::to_string((int)std::lround(s.colour_bar_rect[3] * fx)) + "]";
+        if (!probes.empty()) j += ", \"probes\": " + probes;
+        j += "}";
+    }
     j += ", \"camera\": {\"yaw\": " + json_number(cam.yaw) + ", \"pitch\": " + json_number(cam.pitch) +
          ", \"distance\": " + json_number(cam.distance) + ", \"pivot\": [" + json_number(cam.pivot.x) + ", " +
          json_number(cam.pivot.y) + ", " + json_number(cam.pivot.z) + "], \"origin\": [" + json_number(origin.x) + ", " +
@@ -345,6 +509,7 @@ bool export_selected(AppState& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    const auto program_start = std::chrono::steady_clock::now();
     // ---- 0. Command line
     Options opt;
     try {
@@ -379,6 +544,11 @@ int main(int argc, char** argv) {
         return 2;
     }
     if (!opt.export_dir.empty()) s.export_dir = opt.export_dir;
+    s.exact_mode = opt.exact_colormap == 0   ? ExactMode::Off
+                   : opt.exact_colormap == 1 ? ExactMode::On
+                   : opt.exact_colormap == 2 ? ExactMode::Wait
+                   : s.headless              ? ExactMode::Wait
+                                             : ExactMode::On;
 
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
@@ -438,7 +608,17 @@ int main(int argc, char** argv) {
     Camera camera;
     ComputeJob compute;
     TraceJob trace;
+    ExactMapJob exact_job;   // the exact colour map's fill-in (one direction at a time)
+    // Times in the state are from start-up for the first pair, from the request for later ones.
+    auto compute_started = program_start;
+    bool first_compute = true;
+    auto since_start = [&]() { return std::chrono::duration<double>(std::chrono::steady_clock::now() - compute_started).count(); };
     auto start_compute = [&]() {
+        exact_job.cancel();   // its values are for the old meshes (dropped when harvested)
+        s.exact[0] = s.exact[1] = ExactMap{};
+        s.distances_at = -1;
+        if (!first_compute) compute_started = std::chrono::steady_clock::now();
+        first_compute = false;
         if (s.case_loaded)
             compute.start(s.case_mesh[0], s.case_mesh[1]);
         else
@@ -456,12 +636,14 @@ int main(int argc, char** argv) {
 
     while (!glfwWindowShouldClose(window) && !g_quit) {
         // ---- 1. Events (interactive and idle: sleep until something happens)
-        const bool busy = compute.running() || trace.running();
+        // (while only the exact colour map fills in, 10 frames a second show its progress and
+        // leave the cores to it; input still wakes the loop at once)
+        const bool busy = compute.running() || trace.running(), filling = exact_job.running();
         if (s.headless || busy || redraw > 0)
             glfwPollEvents();
         else
-            glfwWaitEventsTimeout(0.25);
-        if (s.headless && busy) std::this_thread::sleep_for(std::chrono::milliseconds(10));   // leave the cores to the job
+            glfwWaitEventsTimeout(filling ? 0.1 : 0.25);
+        if (s.headless && (busy || filling)) std::this_thread::sleep_for(std::chrono::milliseconds(10));   // leave the cores to the jobs
         // A new content scale (the window moved to another screen; --dpi-scale from frame 3 on).
         if (opt.dpi_scale > 0 && frame == 3) g_content_scale = opt.dpi_scale;
         if (g_content_scale > 0 && g_content_scale != dpi) {
@@ -498,18 +680,48 @@ int main(int argc, char** argv) {
                 remember(s.recent, s.path[0], recent_file);
             }
             if (s.computed) {
+                // The distances show now; the colour map starts with the triangles fast mode solved
+                // exactly, the others "not yet exact" until the fill-in below brings their values.
                 s.result = std::move(out->result);
+                s.distances_at = since_start();
                 for (int d = 0; d < 2; ++d) {
-                    const std::vector<double>& v = d == 0 ? s.result.a_to_b.target_max : s.result.b_to_a.target_max;
-                    scene.set_values(d, v);
-                    ColourRange& r = s.range[d];
-                    r.valid = !v.empty();
-                    if (r.valid) {
-                        auto [mn, mx] = std::minmax_element(v.begin(), v.end());
-                        r.data_lo = r.lo = (float)*mn;
-                        r.data_hi = r.hi = (float)*mx;
-                    }
+                    init_exact(s, d);
+                    scene.set_values(d, s.exact[d].value);
+                    refresh_range(s, d, true);
                 }
+            }
+        }
+        // The exact colour map: take the fill-in's new values (for these meshes only), then make
+        // sure it runs for the direction shown while that one is incomplete.
+        {
+            const bool current = s.scene && exact_job.scene() == s.scene.get() && s.computed;
+            auto values = exact_job.take_values();
+            const int side = exact_job.side();
+            bool changed = false;
+            if (current)
+                for (const auto& [t, v] : values) changed |= set_exact(s, side, t, v);
+            if (exact_job.take_ended() && current && !s.exact[side].complete() && !exact_job.cancelling()) {
+                s.exact[side].failed = exact_job.phase();   // ended without being asked to: an error
+                std::fprintf(stderr, "hlens: exact colour map: %s\n", s.exact[side].failed.c_str());
+            }
+            if (changed) {
+                scene.set_values(side, s.exact[side].value);
+                refresh_range(s, side, false);
+            }
+            for (ExactMap& e : s.exact)
+                if (s.computed && e.complete() && e.complete_at < 0) e.complete_at = since_start();
+            const int d = s.direction;
+            ExactMap& m = s.exact[d];
+            const bool wanted = s.exact_mode != ExactMode::Off && s.computed && s.scene && s.scene->grid && !m.complete() &&
+                                !m.stopped && m.failed.empty();
+            const bool on_it = exact_job.running() && current && side == d;
+            if (exact_job.running() && !on_it && !exact_job.cancelling())
+                exact_job.cancel();   // another direction or older meshes: stop it (values found so far stay)
+            if (wanted && !exact_job.running()) {   // (a cancelled run is started anew once it has stopped)
+                const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+                std::vector<uint8_t> known(m.value.size());
+                for (size_t t = 0; t < known.size(); ++t) known[t] = m.value[t] >= 0;
+                exact_job.start(s.scene, d, order_by_decreasing_bound(r.target_max, known));
             }
         }
         if (!g_dropped.empty()) {
@@ -517,7 +729,14 @@ int main(int argc, char** argv) {
             g_dropped.clear();
         }
         if (auto tr = trace.take_result())
-            if (!tr->cancelled && s.selected[tr->side] == (long)tr->target) s.trace[tr->side] = std::move(*tr);
+            if (!tr->cancelled && s.selected[tr->side] == (long)tr->target) {
+                // A finished trace is the target's full construction: its maximum is exact.
+                if (s.computed && tr->error.empty() && set_exact(s, tr->side, tr->target, tr->max)) {
+                    scene.set_values(tr->side, s.exact[tr->side].value);
+                    refresh_range(s, tr->side, false);
+                }
+                s.trace[tr->side] = std::move(*tr);
+            }
         // --target: applied once the meshes are there (out of range is an input error, like hlens-cli's).
         if (!target_applied && s.scene) {
             target_applied = true;
@@ -552,6 +771,8 @@ int main(int argc, char** argv) {
         s.phase = compute.phase();
         s.elapsed = compute.elapsed_seconds();
         s.trace_running = trace.running();
+        s.exact_running = exact_job.running() && s.scene && exact_job.scene() == s.scene.get();
+        s.exact_side = exact_job.side();
 
         // ---- 3. Start the Dear ImGui frame
         ImGui_ImplOpenGL3_NewFrame();
@@ -610,6 +831,7 @@ int main(int argc, char** argv) {
             p.lo = s.range[s.direction].lo;
             p.hi = s.range[s.direction].hi;
             p.selected = (int)s.selected[s.direction];
+            p.hatch = std::round(hatch_period(ImGui::GetFontSize()) * fbs_x);
             return p;
         };
 
@@ -663,6 +885,14 @@ int main(int argc, char** argv) {
         s.req = Requests{};
         s.req.screenshot = req.screenshot;   // handled after rendering (step 8)
         if (req.cancel) compute.cancel();
+        if (req.exact_cancel && exact_job.running()) {
+            exact_job.cancel();
+            s.exact[exact_job.side()].stopped = true;
+        }
+        if (req.exact_resume) {
+            s.exact[s.direction].stopped = false;
+            s.exact[s.direction].failed.clear();
+        }
         if (req.load) {   // a new pair from the file panel or dropped files
             for (int side = 0; side < 2; ++side) {
                 s.path[side] = s.edit_path[side] = req.load_path[side];
@@ -687,7 +917,7 @@ int main(int argc, char** argv) {
         if (req.export_case) export_selected(s);
         if (req.recompute) {
             s.computed = s.cancelled = false;
-            s.range[0].valid = s.range[1].valid = false;
+            s.range[0].valid = s.range[1].valid = false;   // (start_compute clears the exact maps)
             compute_done = false;
             start_compute();
         }
@@ -703,8 +933,8 @@ int main(int argc, char** argv) {
         double reach = 0;
         if (req.focus && scene.loaded() && selected_target_ball(s, centroid, reach)) {
             const int d = s.direction;
-            const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
-            const double tmax = s.computed && (size_t)s.selected[d] < r.target_max.size() ? r.target_max[s.selected[d]] : 0;
+            bool exact = false;
+            const double tmax = s.computed ? target_value(s, d, s.selected[d], exact) : 0;
             const float half = (float)(1.15 * (reach + (std::isfinite(tmax) ? tmax : 0.0))) + 1e-6f;
             const glm::vec3 g = scene.local(centroid);
             camera.focus(g - glm::vec3(half), g + glm::vec3(half), aspect);
@@ -733,8 +963,13 @@ int main(int argc, char** argv) {
             const bool errored = !s.errors.empty();
             const bool traced = (t < 0 || (s.trace[d] && s.trace[d]->target == (uint32_t)t)) &&
                                 (opt.step == -1 || step_applied || errored);
+            // --exact-colormap wait (the default): the fill-in of the direction shown has ended
+            // (complete, stopped or failed; a stopped run's targets in progress have landed).
+            const ExactMap& em = s.exact[d];
+            const bool filled = s.exact_mode != ExactMode::Wait || !s.computed ||
+                                ((em.complete() || em.stopped || !em.failed.empty()) && !exact_job.running());
             const bool ready = compute_done && !compute.running() &&
-                               (errored || (target_applied && script_pos >= script.size() && traced && !trace.running()));
+                               (errored || (target_applied && script_pos >= script.size() && traced && !trace.running() && filled));
             if (!ready) settle = 0;
             if (ready && ++settle > 4) {   // a few frames for ImGui windows to size themselves
                 if (!opt.export_dir.empty() && !errored && !export_selected(s)) {
@@ -747,7 +982,14 @@ int main(int argc, char** argv) {
                     exit_code = 1;
                 } else {
                     exit_code = s.errors.empty() ? 0 : 2;
-                    if (exit_code == 0) std::printf("%s\n", state_json(s, camera, scene.origin(), fb_w, fb_h, params.viewport).c_str());
+                    std::string probes;   // (after the PNG: the ID pass does not touch the window's buffers)
+                    if (exit_code == 0 && scene.loaded() && s.computed) {
+                        const std::vector<int> ids = picker.triangle_ids(scene, params, d, fb_w, fb_h);
+                        probes = probes_json(s, ids, params.viewport, fb_h, params.mvp, scene, fbs_x,
+                                             (int)std::lround(1.5f * ImGui::GetFontSize() * fbs_x), 4);
+                    }
+                    if (exit_code == 0)
+                        std::printf("%s\n", state_json(s, camera, scene.origin(), fb_w, fb_h, params.viewport, probes).c_str());
                 }
                 break;
             }
@@ -760,6 +1002,7 @@ int main(int argc, char** argv) {
     // ---- Clean-up: stop the jobs first (they may still be reading the meshes)
     compute.cancel();
     trace.cancel();
+    exact_job.cancel();
     picker_ptr.reset();
     scene_ptr.reset();
     ImGui_ImplOpenGL3_Shutdown();

@@ -121,10 +121,41 @@ void direction_section(AppState& s) {
         ImGui::SetTooltip("the measured mesh carries the colour map and the targets");
 }
 
-void colour_bar(const ColourRange& r) {
+// 12,345
+std::string with_commas(size_t n) {
+    std::string d = std::to_string(n), out;
+    for (size_t i = 0; i < d.size(); ++i) {
+        if (i && (d.size() - i) % 3 == 0) out += ',';
+        out += d[i];
+    }
+    return out;
+}
+
+// A swatch of the "not yet exact" hatch, as the 3D view draws it (mesh.frag.glsl): the two greys in
+// diagonal stripes of period hatch_period(font size) along x.
+void hatch_swatch(float w, float h) {
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    auto grey = [](float g) {
+        const int v = (int)std::lround(g * 255);
+        return IM_COL32(v, v, v, 255);
+    };
+    dl->AddRectFilled(p, ImVec2(p.x + w, p.y + h), grey(kNotExactGrey[0]));
+    dl->PushClipRect(p, ImVec2(p.x + w, p.y + h), true);
+    const float period = hatch_period(em());
+    for (float x = p.x - h - period; x < p.x + w + period; x += period)   // lines of slope +1 (screen)
+        dl->AddLine(ImVec2(x + 0.25f * period, p.y), ImVec2(x + 0.25f * period + h, p.y + h), grey(kNotExactGrey[1]),
+                    0.5f * period / std::sqrt(2.0f));
+    dl->PopClipRect();
+    dl->AddRect(p, ImVec2(p.x + w, p.y + h), IM_COL32(0, 0, 0, 255));
+    ImGui::Dummy(ImVec2(w, h));
+}
+
+void colour_bar(AppState& s, const ColourRange& r) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 p = ImGui::GetCursorScreenPos();
     float w = ImGui::GetContentRegionAvail().x, h = 1.1f * em();
+    s.colour_bar_rect[0] = p.x, s.colour_bar_rect[1] = p.y, s.colour_bar_rect[2] = w, s.colour_bar_rect[3] = h;
     const auto& table = colormap_table();
     const int n = 64;
     for (int i = 0; i < n; ++i) {
@@ -150,6 +181,53 @@ void colour_bar(const ColourRange& r) {
     ImGui::TextUnformatted(hi);
 }
 
+// The exact colour map's state for direction d: the legend of the grey triangles, the fill-in's
+// progress with Cancel, or why it is not running.
+void exact_section(AppState& s) {
+    const int d = s.direction;
+    const ExactMap& m = s.exact[d];
+    const size_t n = m.value.size();
+    if (n == 0) return;
+    // (once cancelled it shows as stopped, though the targets in progress still finish)
+    const bool running = s.exact_running && s.exact_side == d && !m.stopped;
+    if (!m.complete()) {
+        hatch_swatch(2.2f * em(), 1.1f * em());
+        ImGui::SameLine();
+        ImGui::TextWrapped("not yet exact: %s of %s triangles (their exact maximum is still unknown; not coloured by a bound)",
+                           with_commas(n - m.exact).c_str(), with_commas(n).c_str());
+    }
+    const std::string counts = with_commas(m.exact) + " / " + with_commas(n) + " triangles";
+    auto disabled_wrapped = [](const std::string& text) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", text.c_str());
+        ImGui::PopStyleColor();
+    };
+    const bool stopped = !running && m.stopped && !m.complete() && m.failed.empty() && s.exact_mode != ExactMode::Off;
+    if (running || stopped) {   // Cancel and Continue take the same place
+        ImGui::TextWrapped("exact colour map: %s", counts.c_str());
+        char pct[48];
+        std::snprintf(pct, sizeof pct, "%s%.0f%%", stopped ? "stopped at " : "", 100.0 * m.exact / n);
+        ImGui::ProgressBar((float)m.exact / (float)n, ImVec2(-6 * em(), 0), pct);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the exact maximum over every triangle the fast computation skipped,\n"
+                              "computed in the background, largest upper bound first");
+        ImGui::SameLine();
+        if (running && ImGui::Button("Cancel##exact", ImVec2(-1, 0))) s.req.exact_cancel = true;
+        if (stopped && ImGui::Button("Continue##exact", ImVec2(-1, 0))) s.req.exact_resume = true;
+        if (stopped && ImGui::IsItemHovered()) ImGui::SetTooltip("continue filling in the exact colour map");
+    } else if (m.complete()) {
+        disabled_wrapped("exact colour map: every triangle exact (" + with_commas(n) + ")");
+    } else if (!m.failed.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.4f, 1));
+        ImGui::TextWrapped("exact colour map failed: %s", m.failed.c_str());
+        ImGui::PopStyleColor();
+    } else if (s.exact_mode == ExactMode::Off) {
+        disabled_wrapped("exact colour map: off (--exact-colormap off); " + counts + " exact");
+    } else {
+        disabled_wrapped("exact colour map: " + counts);
+    }
+}
+
 void colormap_section(AppState& s) {
     const int d = s.direction;
     char title[96];
@@ -171,7 +249,8 @@ void colormap_section(AppState& s) {
         r.lo = r.data_lo;
         r.hi = r.data_hi;
     }
-    colour_bar(r);
+    colour_bar(s, r);
+    exact_section(s);
 }
 
 void meshes_section(AppState& s) {
@@ -230,6 +309,8 @@ void target_window(AppState& s) {
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoFocusOnAppearing);
     target_contents(s);
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    s.target_window = ViewRect{pos.x, pos.y, size.x, size.y};
     ImGui::End();
 }
 
@@ -254,12 +335,14 @@ void target_contents(AppState& s) {
     if (ImGui::BeginTable("target", 2, ImGuiTableFlags_SizingFixedFit)) {
         ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, 6 * em());
         const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
-        if (s.computed && (size_t)t < r.target_max.size()) {
-            bool exact = (size_t)t < r.target_exact.size() && r.target_exact[t];
+        if (s.computed && s.exact[d].known(t)) {
+            row("target_max", fmt("%.17g", s.exact[d].value[t]), "max distance over T' (exact)");
+            row("", (size_t)t < r.target_exact.size() && r.target_exact[t] ? "exact" : "exact (colour map fill-in)");
+        } else if (s.computed && (size_t)t < r.target_max.size()) {
             row("target_max", fmt("%.17g", r.target_max[t]),
-                exact ? "max distance over T' (exact)"
-                      : "fast mode skipped this target: an upper bound, below the result");
-            row("", exact ? "exact" : "upper bound");
+                "fast mode skipped this target: an upper bound, below the result;\n"
+                "its exact value comes with the exact colour map (or the trace below)");
+            row("", "upper bound (not yet exact)");
         }
         ImGui::EndTable();
     }
@@ -438,6 +521,7 @@ void help_text() {
     ImGui::BulletText("Escape: cancel the dropped-files dialog");
     ImGui::TextDisabled("Other");
     ImGui::BulletText("drop files on the window: open them as A and B");
+    ImGui::BulletText("grey, hatched triangles: not yet exact (the exact colour map is filling in)");
     ImGui::TextDisabled("'voxels & radius' (timeline): voxels seen so far");
     ImGui::TextDisabled("(green visited, yellow pending, grey culled) and a");
     ImGui::TextDisabled("sphere of radius r + reach of T' around its centroid,");

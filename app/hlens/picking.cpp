@@ -38,12 +38,10 @@ void Picker::resize(int w, int h) {
     h_ = h;
 }
 
-PickHit Picker::pick(const Scene& scene, const ViewParams& p, unsigned mask, int fb_width, int fb_height, int x, int y) {
-    PickHit hit;
-    if (!program_ || !scene.loaded() || x < 0 || y < 0 || x >= fb_width || y >= fb_height) return hit;
+// Draws the meshes of `mask` into the ID framebuffer, which is left bound; filled, or `as_drawn`
+// (a wireframe mesh as its lines).
+void Picker::render_ids(const Scene& scene, const ViewParams& p, unsigned mask, int fb_width, int fb_height, bool as_drawn) {
     resize(fb_width, fb_height);
-    GLint prev_fbo = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prev_fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
     glViewport(p.viewport[0], p.viewport[1], p.viewport[2], p.viewport[3]);
     const GLuint zero[4] = {0, 0, 0, 0};
@@ -58,9 +56,38 @@ PickHit Picker::pick(const Scene& scene, const ViewParams& p, unsigned mask, int
     for (int side = 0; side < 2; ++side) {
         if (!(mask & (1u << side)) || !p.style[side].visible) continue;
         glUniform1ui(glGetUniformLocation(program_, "u_mesh"), (GLuint)side);
+        glPolygonMode(GL_FRONT_AND_BACK, as_drawn && p.style[side].mode == DrawMode::Wireframe ? GL_LINE : GL_FILL);
         scene.mesh(side).draw();
     }
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     glUseProgram(0);
+}
+
+std::vector<int> Picker::triangle_ids(const Scene& scene, const ViewParams& p, int side, int fb_width, int fb_height) {
+    const int w = p.viewport[2], h = p.viewport[3];
+    std::vector<int> ids((size_t)w * h, -1);
+    if (!program_ || !scene.loaded() || w <= 0 || h <= 0) return ids;
+    GLint prev_fbo = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prev_fbo);
+    render_ids(scene, p, 3u, fb_width, fb_height, true);   // both: the other one may be in front
+    std::vector<GLuint> px((size_t)w * h * 4, 0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glReadPixels(p.viewport[0], p.viewport[1], w, h, GL_RGBA_INTEGER, GL_UNSIGNED_INT, px.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, (GLuint)prev_fbo);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    for (size_t i = 0; i < ids.size(); ++i)
+        if (px[4 * i] == GLuint(side + 1) && px[4 * i + 1] > 0) ids[i] = int(px[4 * i + 1]) - 1;
+    return ids;
+}
+
+PickHit Picker::pick(const Scene& scene, const ViewParams& p, unsigned mask, int fb_width, int fb_height, int x, int y) {
+    PickHit hit;
+    if (!program_ || !scene.loaded() || x < 0 || y < 0 || x >= fb_width || y >= fb_height) return hit;
+    GLint prev_fbo = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &prev_fbo);
+    render_ids(scene, p, mask, fb_width, fb_height, false);
     GLuint id[4] = {0, 0, 0, 0};
     float depth = 1;
     glPixelStorei(GL_PACK_ALIGNMENT, 1);

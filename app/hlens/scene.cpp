@@ -35,8 +35,8 @@ void GpuMesh::upload(const TriangleMesh& m, const Vec3& origin) {
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void*)(3 * sizeof(float)));
     glGenBuffers(1, &vbo_value_);
     glBindBuffer(GL_ARRAY_BUFFER, vbo_value_);
-    std::vector<float> zeros(vertex_count_, 0.0f);
-    glBufferData(GL_ARRAY_BUFFER, zeros.size() * sizeof(float), zeros.data(), GL_DYNAMIC_DRAW);
+    std::vector<float> unknown(vertex_count_, -1.0f);   // not yet exact until values are set
+    glBufferData(GL_ARRAY_BUFFER, unknown.size() * sizeof(float), unknown.data(), GL_DYNAMIC_DRAW);
     glEnableVertexAttribArray(2);
     glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(float), (void*)0);
     glBindVertexArray(0);
@@ -45,9 +45,9 @@ void GpuMesh::upload(const TriangleMesh& m, const Vec3& origin) {
 
 void GpuMesh::set_values(const std::vector<double>& per_triangle) {
     if (!vbo_value_) return;
-    std::vector<float> v(vertex_count_, 0.0f);
+    std::vector<float> v(vertex_count_, -1.0f);
     for (size_t t = 0; t < per_triangle.size() && 3 * t + 2 < v.size(); ++t)
-        v[3 * t] = v[3 * t + 1] = v[3 * t + 2] = float(per_triangle[t]);
+        v[3 * t] = v[3 * t + 1] = v[3 * t + 2] = per_triangle[t] >= 0 ? float(per_triangle[t]) : -1.0f;
     glBindBuffer(GL_ARRAY_BUFFER, vbo_value_);
     glBufferSubData(GL_ARRAY_BUFFER, 0, v.size() * sizeof(float), v.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
@@ -154,6 +154,8 @@ void Scene::draw(const ViewParams& p) const {
     glUniform3fv(glGetUniformLocation(program_, "u_eye"), 1, glm::value_ptr(p.eye));
     glUniform1f(glGetUniformLocation(program_, "u_lo"), p.lo);
     glUniform1f(glGetUniformLocation(program_, "u_hi"), p.hi);
+    glUniform1f(glGetUniformLocation(program_, "u_hatch"), p.hatch);
+    glUniform2f(glGetUniformLocation(program_, "u_grey"), kNotExactGrey[0], kNotExactGrey[1]);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, colormap_tex_);
     glUniform1i(glGetUniformLocation(program_, "u_colormap"), 0);

@@ -29,7 +29,8 @@ class GpuMesh {
 public:
     ~GpuMesh() { destroy(); }
     void upload(const TriangleMesh& m, const Vec3& origin);
-    void set_values(const std::vector<double>& per_triangle);   // the colour map's scalar
+    // The colour map's scalar per triangle; a negative value: not yet exact (drawn hatched grey).
+    void set_values(const std::vector<double>& per_triangle);
     void destroy();
     bool empty() const { return vertex_count_ == 0; }
     void draw() const;
@@ -48,6 +49,7 @@ struct ViewParams {
     int measured = 0;                 // the mesh the colour map is drawn on
     bool use_map = false;
     float lo = 0, hi = 1;             // colour map range
+    float hatch = 8;                  // period of the "not yet exact" stripes (framebuffer pixels)
     int selected = -1;                // selected triangle of the measured mesh
 };
 
