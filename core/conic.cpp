@@ -16,9 +16,6 @@ Interval Quadratic2::range(Vec2 lo, Vec2 hi) const {
     return {r.lo - m, r.hi + m};
 }
 
-double Quadratic2::scale() const {
-    return std::max({std::fabs(a), std::fabs(b), std::fabs(c), std::fabs(d), std::fabs(e), std::fabs(f)});
-}
 
 std::string Quadratic2::to_string() const {
     char buf[256];
@@ -26,10 +23,6 @@ std::string Quadratic2::to_string() const {
     return buf;
 }
 
-bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel) {
-    double s = std::max(p.scale(), q.scale());
-    return (p - q).scale() <= rel * std::max(s, 1e-300);
-}
 
 Quadratic2 half_plane(Vec2 n, double offset) {
     Quadratic2 q;
@@ -61,12 +54,25 @@ Poly RationalCurve::compose(const Quadratic2& q) const {
         r.c[0] = q(n0);
         return r;
     }
-    Poly X, Y, W = weight();
-    X.deg = Y.deg = 2;
-    X.c[0] = n0.x; X.c[1] = n1.x; X.c[2] = n2.x;
-    Y.c[0] = n0.y; Y.c[1] = n1.y; Y.c[2] = n2.y;
-    Poly r = q.a * (X * X) + (2 * q.b) * (X * Y) + q.c * (Y * Y) + (2 * q.d) * (X * W) + (2 * q.e) * (Y * W) + q.f * (W * W);
+    // q.a X^2 + 2 q.b X Y + q.c Y^2 + 2 q.d X W + 2 q.e Y W + q.f W^2 for the quadratics X, Y, W
+    // (the numerators and the weight), written out: the same operations in the same order as
+    // the Poly arithmetic it replaces (products summed from 0 by increasing i, then j; the six
+    // terms scaled, then added left to right), so the same bits, without the temporaries.
+    const double X[3] = {n0.x, n1.x, n2.x}, Y[3] = {n0.y, n1.y, n2.y}, W[3] = {w0, w1, w2};
+    auto mul = [](const double* a, const double* b, double* r) {
+        r[0] = 0.0 + a[0] * b[0];
+        r[1] = (0.0 + a[0] * b[1]) + a[1] * b[0];
+        r[2] = ((0.0 + a[0] * b[2]) + a[1] * b[1]) + a[2] * b[0];
+        r[3] = (0.0 + a[1] * b[2]) + a[2] * b[1];
+        r[4] = 0.0 + a[2] * b[2];
+    };
+    double XX[5], XY[5], YY[5], XW[5], YW[5], WW[5];
+    mul(X, X, XX); mul(X, Y, XY); mul(Y, Y, YY); mul(X, W, XW); mul(Y, W, YW); mul(W, W, WW);
+    const double sa = q.a, sb = 2 * q.b, sc = q.c, sd = 2 * q.d, se = 2 * q.e, sf = q.f;
+    Poly r;
     r.deg = 4;
+    for (int i = 0; i < 5; ++i)
+        r.c[i] = ((((XX[i] * sa + XY[i] * sb) + YY[i] * sc) + XW[i] * sd) + YW[i] * se) + WW[i] * sf;
     return r;
 }
 
@@ -119,13 +125,19 @@ double CurveComponent::param_of(Vec2 p) const {
 
 std::vector<CurveComponent::Piece> CurveComponent::pieces(double t0, double t1) const {
     std::vector<Piece> out;
+    pieces(t0, t1, out);
+    return out;
+}
+
+void CurveComponent::pieces(double t0, double t1, std::vector<Piece>& out) const {
+    out.clear();
     assert(t1 >= t0);
     if (kind == CurveKind::Line || kind == CurveKind::Parabola) {
         RationalCurve r;
         r.n0 = c; r.n1 = u;
         if (kind == CurveKind::Parabola) r.n2 = v;
         out.push_back({r, t0, t1});
-        return out;
+        return;
     }
     // Split so that every piece's weight stays away from zero.
     const double max_span = kind == CurveKind::Ellipse ? M_PI : 3.0;
@@ -152,22 +164,30 @@ std::vector<CurveComponent::Piece> CurveComponent::pieces(double t0, double t1) 
             out.push_back({r, -z, z});
         }
     }
+}
+
+ConicDecomposition decompose_conic(const Quadratic2& q) {
+    ConicDecomposition out;
+    decompose_conic(q, out);
     return out;
 }
 
-ConicDecomposition decompose_conic(const Quadratic2& q0) {
-    ConicDecomposition out;
+void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
+    out.type = ConicType::Empty;
+    out.components.clear();
     double s = q0.scale();
-    if (s == 0 || !std::isfinite(s)) { out.type = ConicType::Everything; return out; }
+    if (s == 0 || !std::isfinite(s)) { out.type = ConicType::Everything; return; }
     Quadratic2 q = q0 * (1.0 / s);
     // Relative thresholds: the plane is scaled so the target has unit size.
     const double eps_quad = 1e-12, eps_par = 1e-10, eps_k = 1e-14, eps_lin = 1e-12;
 
-    // Eigen-decomposition of the quadratic part [[a b][b c]].
-    double theta = 0.5 * std::atan2(2 * q.b, q.a - q.c);
-    Vec2 e1{std::cos(theta), std::sin(theta)}, e2{-e1.y, e1.x};
+    // Eigen-decomposition of the quadratic part [[a b][b c]]; none for a linear q (a region
+    // boundary, the most common case), whose eigenvalues are exactly 0.
+    const bool linear = q.is_linear();
+    double theta = linear ? 0.0 : 0.5 * std::atan2(2 * q.b, q.a - q.c);
+    Vec2 e1 = linear ? Vec2{1, 0} : Vec2{std::cos(theta), std::sin(theta)}, e2{-e1.y, e1.x};
     auto quad = [&](Vec2 e) { return q.a * e.x * e.x + 2 * q.b * e.x * e.y + q.c * e.y * e.y; };
-    double l1 = quad(e1), l2 = quad(e2);
+    double l1 = linear ? 0.0 : quad(e1), l2 = linear ? 0.0 : quad(e2);
     if (std::fabs(l2) > std::fabs(l1)) { std::swap(l1, l2); std::swap(e1, e2); }
     Vec2 B{q.d, q.e};
 
@@ -181,11 +201,11 @@ ConicDecomposition decompose_conic(const Quadratic2& q0) {
 
     if (std::fabs(l1) <= eps_quad) {  // linear: 2 B.x + f = 0
         double nb = norm(B);
-        if (nb <= eps_lin) { out.type = std::fabs(q.f) <= eps_lin ? ConicType::Everything : ConicType::Empty; return out; }
+        if (nb <= eps_lin) { out.type = std::fabs(q.f) <= eps_lin ? ConicType::Everything : ConicType::Empty; return; }
         Vec2 n = B / nb;
         add_line(n * (-q.f / (2 * nb)), perp(n));
         out.type = ConicType::Line;
-        return out;
+        return;
     }
     double b1 = dot(B, e1), b2 = dot(B, e2);
     if (std::fabs(l2) > eps_par * std::fabs(l1)) {
@@ -194,8 +214,8 @@ ConicDecomposition decompose_conic(const Quadratic2& q0) {
         double k = q.f - b1 * b1 / l1 - b2 * b2 / l2;
         Vec2 m = X0 * e1 + Y0 * e2;
         if ((l1 > 0) == (l2 > 0)) {
-            if (std::fabs(k) <= eps_k) { out.type = ConicType::Point; return out; }
-            if ((k > 0) == (l1 > 0)) { out.type = ConicType::Empty; return out; }
+            if (std::fabs(k) <= eps_k) { out.type = ConicType::Point; return; }
+            if ((k > 0) == (l1 > 0)) { out.type = ConicType::Empty; return; }
             CurveComponent cc;
             cc.kind = CurveKind::Ellipse;
             cc.c = m;
@@ -203,14 +223,14 @@ ConicDecomposition decompose_conic(const Quadratic2& q0) {
             cc.v = std::sqrt(-k / l2) * e2;
             out.components.push_back(cc);
             out.type = ConicType::Ellipse;
-            return out;
+            return;
         }
         if (std::fabs(k) <= eps_k) {
             double r = std::sqrt(-l1 / l2);
             add_line(m, e1 + r * e2);
             add_line(m, e1 - r * e2);
             out.type = ConicType::LinePair;
-            return out;
+            return;
         }
         // Hyperbola: branches open along the axis whose eigenvalue has the sign opposite to k.
         Vec2 ea = e1, eb = e2;
@@ -226,7 +246,7 @@ ConicDecomposition decompose_conic(const Quadratic2& q0) {
             out.components.push_back(cc);
         }
         out.type = ConicType::Hyperbola;
-        return out;
+        return;
     }
     // Parabolic: l2 ~ 0, so q = l1 X^2 + 2 b1 X + 2 b2 Y + f.
     if (std::fabs(b2) > eps_par) {
@@ -239,18 +259,18 @@ ConicDecomposition decompose_conic(const Quadratic2& q0) {
         cc.v = (-l1 / (2 * b2)) * e2;
         out.components.push_back(cc);
         out.type = ConicType::Parabola;
-        return out;
+        return;
     }
     double disc = b1 * b1 - l1 * q.f;
     if (disc <= eps_k) {
         out.type = disc >= -eps_k ? ConicType::DoubleLine : ConicType::Empty;
-        return out;
+        return;
     }
     double r = std::sqrt(disc);
     add_line(((-b1 + r) / l1) * e1, e2);
     add_line(((-b1 - r) / l1) * e1, e2);
     out.type = ConicType::ParallelLines;
-    return out;
+    return;
 }
 
 }  // namespace hlens

@@ -7,6 +7,7 @@
 // (design notes, "Where the maximum is").
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -40,14 +41,24 @@ struct Quadratic2 {
     Vec2 gradient(Vec2 p) const { return {2 * (a * p.x + b * p.y + d), 2 * (b * p.x + c * p.y + e)}; }
     Quadratic2 operator-(const Quadratic2& o) const { return {a - o.a, b - o.b, c - o.c, d - o.d, e - o.e, f - o.f}; }
     Quadratic2 operator*(double s) const { return {a * s, b * s, c * s, d * s, e * s, f * s}; }
-    double scale() const;  // largest coefficient magnitude
+    double scale() const {  // largest coefficient magnitude (the first of equals, as std::max({...}))
+        double s = std::fabs(a);
+        s = std::max(s, std::fabs(b));
+        s = std::max(s, std::fabs(c));
+        s = std::max(s, std::fabs(d));
+        s = std::max(s, std::fabs(e));
+        return std::max(s, std::fabs(f));
+    }
     Interval range(Vec2 lo, Vec2 hi) const;  // contains q over the box [lo, hi]
     bool is_linear() const { return a == 0 && b == 0 && c == 0; }
     std::string to_string() const;
 };
 
 // Two quadratics are the same polynomial up to rounding (coplanar sources, shared edges).
-bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel = 1e-11);
+inline bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel = 1e-11) {
+    double s = std::max(p.scale(), q.scale());
+    return (p - q).scale() <= rel * std::max(s, 1e-300);
+}
 
 // The line n.x = offset as a linear quadratic (f >= 0 on the side n points to).
 Quadratic2 half_plane(Vec2 n, double offset);
@@ -57,6 +68,7 @@ struct RationalCurve {
     Vec2 n0, n1, n2;
     double w0 = 1, w1 = 0, w2 = 0;
     Vec2 operator()(double z) const {
+        if (w0 == 1 && w1 == 0 && w2 == 0) return n0 + z * (n1 + z * n2);  // w = 1 exactly: x / 1 == x
         double w = w0 + z * (w1 + z * w2);
         return (n0 + z * (n1 + z * n2)) / w;
     }
@@ -83,6 +95,7 @@ struct CurveComponent {
     // piece spans at most pi per arc, a hyperbola piece at most 3 in t); returns the z-intervals.
     struct Piece { RationalCurve curve; double z0, z1; };
     std::vector<Piece> pieces(double t0, double t1) const;
+    void pieces(double t0, double t1, std::vector<Piece>& out) const;  // the same into `out`
     bool closed() const { return kind == CurveKind::Ellipse; }
 };
 
@@ -98,5 +111,6 @@ struct ConicDecomposition {
 // Decompose q = 0 into curve components. Zero sets across which q does not change sign (a double
 // line, a single point) have no components: they never separate a positive from a negative part.
 ConicDecomposition decompose_conic(const Quadratic2& q);
+void decompose_conic(const Quadratic2& q, ConicDecomposition& out);  // the same, reusing `out`
 
 }  // namespace hlens

@@ -8,9 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <set>
-#include <unordered_map>
-#include <unordered_set>
 
 namespace hlens {
 
@@ -56,7 +53,10 @@ double arc_interior_max(const RationalCurve& c, double z0, double z1, const Quad
     Poly F = c.compose(q), W = c.weight();
     Poly D = F.derivative() * W + (-2.0) * (F * W.derivative());
     double best = -HUGE_VAL;
-    for (double z : sign_change_roots(D, z0, z1)) {
+    double roots[kMaxSignChangeRoots];
+    const int n = sign_change_roots(D, z0, z1, roots);
+    for (int i = 0; i < n; ++i) {
+        const double z = roots[i];
         if (z <= z0 || z >= z1) continue;
         double v = q(c(z));
         if (v > best) { best = v; if (zmax) *zmax = z; }
@@ -89,19 +89,91 @@ DomainMesh::DomainMesh(const std::array<Vec2, 3>& P) {
     }
     faces_[1].loops = {0};
     faces_[0].loops = {1};
+    live_faces_ = {1};
 }
 
-int DomainMesh::add_vertex(Vec2 p) {
+int DomainMesh::add_vertex(Vec2 p) {  // no face has it yet: no box changes
     vertices_.push_back({p, true});
+    live_vertices_.push_back((int)vertices_.size() - 1);
     return (int)vertices_.size() - 1;
 }
 
 int DomainMesh::add_edge(const RationalCurve& c, double z0, double z1, const Quadratic2& eq, ArcKind kind, CurveKind ck) {
-    Edge e;
+    Edge e;  // in no face's loop yet: no box changes
     e.curve = c; e.z0 = z0; e.z1 = z1; e.equation = normalized(eq); e.kind = kind; e.curve_kind = ck;
     edges_.push_back(e);
+    edge_alive_.push_back(1);
+    live_edges_.push_back((int)edges_.size() - 1);
+    curved_of_.push_back(-1);
+    set_arc_geometry((int)edges_.size() - 1);
     half_.resize(half_.size() + 2);
     return (int)edges_.size() - 1;
+}
+
+const std::vector<int>& DomainMesh::live_face_ids() {
+    live_faces_.erase(std::remove_if(live_faces_.begin(), live_faces_.end(), [&](int f) { return !faces_[f].alive; }),
+                      live_faces_.end());
+    return live_faces_;
+}
+
+const std::vector<int>& DomainMesh::live_vertex_ids() {
+    live_vertices_.erase(std::remove_if(live_vertices_.begin(), live_vertices_.end(), [&](int v) { return !vertices_[v].alive; }),
+                         live_vertices_.end());
+    return live_vertices_;
+}
+
+const std::vector<int>& DomainMesh::live_edge_ids() {
+    live_edges_.erase(std::remove_if(live_edges_.begin(), live_edges_.end(), [&](int e) { return !edge_alive_[e]; }),
+                      live_edges_.end());
+    return live_edges_;
+}
+
+void DomainMesh::set_arc_geometry(int e) {
+    const Edge& E = edges_[e];
+    if (E.curve.straight()) {
+        curved_of_[e] = -1;
+        return;
+    }
+    if (curved_of_[e] < 0) {
+        curved_of_[e] = (int)curved_.size();
+        curved_.emplace_back();
+    }
+    ArcGeometry& G = curved_[curved_of_[e]].geo;
+    G = ArcGeometry{};
+    // The area between the arc and its chord, by quadrature on the parameter.
+    double zm = 0.5 * (E.z0 + E.z1), zr = 0.5 * (E.z1 - E.z0), seg = 0;
+    for (int i = 0; i < 5; ++i)
+        for (int s : {-1, 1}) {
+            double z = zm + s * kGx[i] * zr;
+            seg += kGw[i] * 0.5 * cross(E.curve(z), E.curve.derivative(z));
+        }
+    seg *= zr;
+    seg -= 0.5 * cross(E.curve(E.z0), E.curve(E.z1));
+    G.segment = seg;
+    // The arc may bulge past its ends: its extreme points in x and in y.
+    Poly W = E.curve.weight();
+    for (int axis = 0; axis < 2; ++axis) {
+        Poly N;
+        N.deg = 2;
+        N.c[0] = axis ? E.curve.n0.y : E.curve.n0.x;
+        N.c[1] = axis ? E.curve.n1.y : E.curve.n1.x;
+        N.c[2] = axis ? E.curve.n2.y : E.curve.n2.x;
+        Poly d = N.derivative() * W + (-1.0) * (N * W.derivative());
+        double roots[kMaxSignChangeRoots];
+        const int n = sign_change_roots(d, E.z0, E.z1, roots);
+        for (int k = 0; k < n; ++k) G.bulge.add(E.curve(roots[k]));
+    }
+    // Where y turns: between these the arc is y-monotone.
+    Poly Y;
+    Y.deg = 2; Y.c[0] = E.curve.n0.y; Y.c[1] = E.curve.n1.y; Y.c[2] = E.curve.n2.y;
+    Poly dY = Y.derivative() * W + (-1.0) * (Y * W.derivative());
+    double roots[kMaxSignChangeRoots];
+    const int nr = sign_change_roots(dY, E.z0, E.z1, roots);
+    for (int k = 0; k < nr; ++k)
+        if (roots[k] > E.z0 && roots[k] < E.z1) {
+            assert(G.nturns < 8);  // dY has degree <= 3: at most 5 reported
+            G.turns[G.nturns++] = roots[k];
+        }
 }
 
 int DomainMesh::num_live_faces() const {
@@ -120,17 +192,43 @@ int DomainMesh::num_live_vertices() const {
     return n;
 }
 
-std::vector<int> DomainMesh::face_half_edges(int f) const {
-    std::vector<int> out;
+template <class Fn>
+void DomainMesh::for_each_half_edge(int f, Fn&& fn) const {
     for (int start : faces_[f].loops) {
         int h = start, guard = 0;
         do {
-            out.push_back(h);
+            fn(h);
             h = half_[h].next;
             if (++guard > 1000000) break;
         } while (h != start);
     }
+}
+
+void DomainMesh::collect_half_edges(int f, std::vector<int>& out) const {
+    out.clear();
+    for_each_half_edge(f, [&](int h) { out.push_back(h); });
+}
+
+std::vector<int> DomainMesh::face_half_edges(int f) const {
+    std::vector<int> out;
+    collect_half_edges(f, out);
     return out;
+}
+
+void DomainMesh::touch_face(int f) {
+    if (f < 0) return;
+    if (face_stamp_.size() < faces_.size()) face_stamp_.resize(faces_.size(), 0);
+    face_stamp_[f] = ++clock_;
+}
+
+void DomainMesh::touch_edge_faces(int e) {
+    touch_face(half_[2 * e].face);
+    touch_face(half_[2 * e + 1].face);
+}
+
+uint64_t DomainMesh::Scratch::next_stamp(std::vector<uint64_t>& marks, size_t n) {
+    if (marks.size() < n) marks.resize(n, 0);
+    return ++stamp;
 }
 
 // ---------------------------------------------------------------- geometry of arcs
@@ -170,15 +268,7 @@ double DomainMesh::loop_area(int start) const {
         Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
         area += 0.5 * cross(a, b);
         if (!E.curve.straight()) {
-            // The area between the arc and its chord, by quadrature on the parameter.
-            double zm = 0.5 * (E.z0 + E.z1), zr = 0.5 * (E.z1 - E.z0), seg = 0;
-            for (int i = 0; i < 5; ++i)
-                for (int s : {-1, 1}) {
-                    double z = zm + s * kGx[i] * zr;
-                    seg += kGw[i] * 0.5 * cross(E.curve(z), E.curve.derivative(z));
-                }
-            seg *= zr;
-            seg -= 0.5 * cross(E.curve(E.z0), E.curve(E.z1));
+            const double seg = arc_geometry(h >> 1).segment;  // between the arc and its chord
             area += (h & 1) ? -seg : seg;
         }
         h = half_[h].next;
@@ -193,20 +283,17 @@ double DomainMesh::face_area(int f) const {
 }
 
 namespace {
-// Number of crossings of the ray {(x, p.y) : x > p.x} with the arc, by y-monotone pieces.
-int ray_crossings(const RationalCurve& c, double z0, double z1, Vec2 A, Vec2 B, Vec2 p) {
-    std::vector<double> zs{z0};
-    if (!c.straight()) {
-        Poly Y, W = c.weight();
-        Y.deg = 2; Y.c[0] = c.n0.y; Y.c[1] = c.n1.y; Y.c[2] = c.n2.y;
-        Poly dY = Y.derivative() * W + (-1.0) * (Y * W.derivative());
-        for (double z : sign_change_roots(dY, z0, z1))
-            if (z > z0 && z < z1) zs.push_back(z);
-    }
-    zs.push_back(z1);
+// Number of crossings of the ray {(x, p.y) : x > p.x} with the arc, by y-monotone pieces (split
+// where y turns, at `turns`).
+int ray_crossings(const RationalCurve& c, double z0, double z1, const double* turns, int nturns, Vec2 A, Vec2 B, Vec2 p) {
+    double zs[10];
+    size_t nz = 0;
+    zs[nz++] = z0;
+    for (int k = 0; k < nturns; ++k) zs[nz++] = turns[k];
+    zs[nz++] = z1;
     int n = 0;
-    auto pt = [&](size_t i) { return i == 0 ? A : (i + 1 == zs.size() ? B : c(zs[i])); };
-    for (size_t i = 0; i + 1 < zs.size(); ++i) {
+    auto pt = [&](size_t i) { return i == 0 ? A : (i + 1 == nz ? B : c(zs[i])); };
+    for (size_t i = 0; i + 1 < nz; ++i) {
         Vec2 a = pt(i), b = pt(i + 1);
         if ((a.y > p.y) == (b.y > p.y)) continue;
         double x;
@@ -231,7 +318,10 @@ int DomainMesh::loop_crossings(int start, Vec2 p) const {
     int n = 0, h = start;
     do {
         const Edge& E = edges_[h >> 1];
-        n += ray_crossings(E.curve, E.z0, E.z1, vertices_[half_[h & ~1].origin].p, vertices_[half_[h | 1].origin].p, p);
+        const bool curved = !E.curve.straight();
+        n += ray_crossings(E.curve, E.z0, E.z1, curved ? arc_geometry(h >> 1).turns : nullptr,
+                           curved ? arc_geometry(h >> 1).nturns : 0, vertices_[half_[h & ~1].origin].p,
+                           vertices_[half_[h | 1].origin].p, p);
         h = half_[h].next;
     } while (h != start);
     return n;
@@ -245,50 +335,73 @@ bool DomainMesh::point_in_face(int f, Vec2 p) const {
 
 Box2 DomainMesh::face_box(int f) const {
     Box2 b;
-    for (int h : faces_[f].loops.empty() ? std::vector<int>{} : face_half_edges(f)) {
+    for_each_half_edge(f, [&](int h) {
         b.add(vertices_[half_[h].origin].p);
-        const Edge& E = edges_[h >> 1];
-        if (E.curve.straight()) continue;
-        // A curved arc may bulge past its ends: add its extreme points in x and in y.
-        Poly W = E.curve.weight();
-        for (int axis = 0; axis < 2; ++axis) {
-            Poly N;
-            N.deg = 2;
-            N.c[0] = axis ? E.curve.n0.y : E.curve.n0.x;
-            N.c[1] = axis ? E.curve.n1.y : E.curve.n1.x;
-            N.c[2] = axis ? E.curve.n2.y : E.curve.n2.x;
-            Poly d = N.derivative() * W + (-1.0) * (N * W.derivative());
-            for (double z : sign_change_roots(d, E.z0, E.z1)) b.add(E.curve(z));
-        }
-    }
+        if (edges_[h >> 1].curve.straight()) return;
+        const Box2& bulge = arc_geometry(h >> 1).bulge;  // a curved arc may bulge past its ends
+        b.lo = {std::min(b.lo.x, bulge.lo.x), std::min(b.lo.y, bulge.lo.y)};
+        b.hi = {std::max(b.hi.x, bulge.hi.x), std::max(b.hi.y, bulge.hi.y)};
+    });
     return b;
 }
 
+Box2 DomainMesh::cached_face_box(int f) {
+    if (box_stamp_.size() < faces_.size()) {
+        box_stamp_.resize(faces_.size(), 0);
+        box_cache_.resize(faces_.size());
+    }
+    if (face_stamp_.size() < faces_.size()) face_stamp_.resize(faces_.size(), 0);
+    if (box_stamp_[f] == 0 || box_stamp_[f] < face_stamp_[f]) {
+        box_cache_[f] = face_box(f);
+        box_stamp_[f] = ++clock_;
+    }
+#ifndef NDEBUG
+    // The invalidation is the delicate part: check it where it is cheap to (debug builds).
+    const Box2 fresh = face_box(f), &kept = box_cache_[f];
+    assert(fresh.lo == kept.lo && fresh.hi == kept.hi);
+#endif
+    return box_cache_[f];
+}
+
 bool DomainMesh::near_boundary(int f, Vec2 p, double tol) const {
-    for (int h : face_half_edges(f)) {
-        const Edge& E = edges_[h >> 1];
-        Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
-        if (E.curve.straight()) {
-            Vec2 d = b - a;
-            double t = norm2(d) > 0 ? std::clamp(dot(p - a, d) / norm2(d), 0.0, 1.0) : 0.0;
-            if (norm(a + t * d - p) <= tol) return true;
-            continue;
-        }
-        double gn = norm(E.equation.gradient(p));
-        if (gn == 0 || std::fabs(E.equation(p)) > tol * gn) continue;
-        // On the conic; on this arc if the foot lies within the arc's parameter range.
-        double lo = std::min(E.z0, E.z1), hi = std::max(E.z0, E.z1);
-        for (int i = 0; i <= 16; ++i) {
-            double z0 = lo + (hi - lo) * i / 16.0;
-            if (norm(E.curve(z0) - p) <= tol + norm(E.curve(lo + (hi - lo) / 16.0) - E.curve(lo))) {
-                // refine by golden-section on |curve(z) - p| over the neighbouring cells
-                double l = std::max(lo, z0 - (hi - lo) / 16.0), r = std::min(hi, z0 + (hi - lo) / 16.0);
-                for (int it = 0; it < 60; ++it) {
-                    double m1 = l + (r - l) * 0.382, m2 = l + (r - l) * 0.618;
-                    if (norm(E.curve(m1) - p) < norm(E.curve(m2) - p)) r = m2; else l = m1;
-                }
-                if (norm(E.curve(0.5 * (l + r)) - p) <= tol) return true;
+    bool near = false;
+    for_each_half_edge(f, [&](int h) {
+        if (!near) near = near_arc(h, p, tol);
+    });
+    return near;
+}
+
+bool DomainMesh::near_arc(int h, Vec2 p, double tol) const {
+    const Edge& E = edges_[h >> 1];
+    Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
+    if (E.curve.straight()) {
+        // Farther than tol from the segment's box (with room for rounding): not near.
+        const double room = tol * (1 + 1e-9) + 1e-12 * (std::fabs(a.x) + std::fabs(a.y) + std::fabs(b.x) + std::fabs(b.y));
+        if (p.x < std::min(a.x, b.x) - room || p.x > std::max(a.x, b.x) + room || p.y < std::min(a.y, b.y) - room ||
+            p.y > std::max(a.y, b.y) + room)
+            return false;
+        Vec2 d = b - a;
+        double t = norm2(d) > 0 ? std::clamp(dot(p - a, d) / norm2(d), 0.0, 1.0) : 0.0;
+        return norm(a + t * d - p) <= tol;
+    }
+    const Vec2 gr = E.equation.gradient(p);
+    const double ev = std::fabs(E.equation(p));
+    // |grad| <= |gx| + |gy|: far off the conic without taking the root.
+    if (ev > tol * ((std::fabs(gr.x) + std::fabs(gr.y)) * (1 + 1e-12))) return false;
+    double gn = norm(gr);
+    if (gn == 0 || ev > tol * gn) return false;
+    // On the conic; on this arc if the foot lies within the arc's parameter range.
+    double lo = std::min(E.z0, E.z1), hi = std::max(E.z0, E.z1);
+    for (int i = 0; i <= 16; ++i) {
+        double z0 = lo + (hi - lo) * i / 16.0;
+        if (norm(E.curve(z0) - p) <= tol + norm(E.curve(lo + (hi - lo) / 16.0) - E.curve(lo))) {
+            // refine by golden-section on |curve(z) - p| over the neighbouring cells
+            double l = std::max(lo, z0 - (hi - lo) / 16.0), r = std::min(hi, z0 + (hi - lo) / 16.0);
+            for (int it = 0; it < 60; ++it) {
+                double m1 = l + (r - l) * 0.382, m2 = l + (r - l) * 0.618;
+                if (norm(E.curve(m1) - p) < norm(E.curve(m2) - p)) r = m2; else l = m1;
             }
+            if (norm(E.curve(0.5 * (l + r)) - p) <= tol) return true;
         }
     }
     return false;
@@ -329,6 +442,7 @@ int DomainMesh::split_edge(int e, double z) {
     Edge copy = edges_[e];
     int e2 = add_edge(copy.curve, z, copy.z1, copy.equation, copy.kind, copy.curve_kind);
     edges_[e].z1 = z;
+    set_arc_geometry(e);
     int h = 2 * e, t = 2 * e + 1, g = 2 * e2, gt = 2 * e2 + 1;
     // forward: h a->v, g v->b
     half_[g].origin = v;
@@ -348,8 +462,9 @@ int DomainMesh::split_edge(int e, double z) {
     return v;
 }
 
-int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2) const {
-    std::vector<int> cands;
+int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2) {
+    std::vector<int>& cands = tmp_.wedge_cands;
+    cands.clear();
     for (int h : hes)
         if (half_[h].face == face && half_[h].next >= 0 && edges_[h >> 1].alive && target(h) == v) cands.push_back(h);
     if (cands.size() == 1) return cands[0];
@@ -375,6 +490,7 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
 
 void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& es, bool closed_new) {
     assert(verts.size() == es.size() + 1);
+    touch_face(face);
     size_t n = es.size();
     for (size_t k = 0; k < n; ++k) {
         int h = 2 * es[k];
@@ -417,20 +533,24 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
     }
 }
 
-std::vector<int> DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse) {
-    Face proto = faces_[reuse];
-    std::vector<int> cycles;
-    std::vector<double> areas;
-    std::unordered_set<int> seen;
-    seen.reserve(hes.size() * 2);
+void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids) {
+    touch_face(reuse);
+    std::vector<int>& cycles = tmp_.cycles;
+    std::vector<double>& areas = tmp_.areas;
+    cycles.clear();
+    areas.clear();
+    const uint64_t seen = tmp_.next_stamp(tmp_.seen_mark, half_.size());
     for (int h0 : hes) {
-        if (seen.count(h0)) continue;
+        if (tmp_.seen_mark[h0] == seen) continue;
         int h = h0, guard = 0;
-        do { seen.insert(h); h = half_[h].next; } while (h != h0 && ++guard < 1000000);
+        do { tmp_.seen_mark[h] = seen; h = half_[h].next; } while (h != h0 && ++guard < 1000000);
         cycles.push_back(h0);
         areas.push_back(loop_area(h0));
     }
-    std::vector<int> outers, holes;
+    std::vector<int>& outers = tmp_.outers;
+    std::vector<int>& holes = tmp_.holes;
+    outers.clear();
+    holes.clear();
     for (size_t i = 0; i < cycles.size(); ++i) (areas[i] > 0 ? outers : holes).push_back((int)i);
     if (outers.empty() && !holes.empty()) {  // numerically flat: the largest loop is the outer one
         auto it = std::max_element(holes.begin(), holes.end(), [&](int x, int y) { return std::fabs(areas[x]) < std::fabs(areas[y]); });
@@ -438,13 +558,23 @@ std::vector<int> DomainMesh::rebuild_faces(const std::vector<int>& hes, int reus
         holes.erase(it);
         ++stats_.warnings;
     }
-    std::vector<int> fids;
-    for (size_t k = 0; k < outers.size(); ++k) {
-        int fid = reuse;
-        if (k > 0) { faces_.push_back(proto); fid = (int)faces_.size() - 1; }
-        faces_[fid].loops = {cycles[outers[k]]};
-        faces_[fid].alive = true;
-        fids.push_back(fid);
+    fids.clear();
+    if (!outers.empty()) {
+        // New faces start as copies of `reuse` (its quadratic and label), without its loops.
+        assert(faces_[reuse].alive);  // (dead faces are never revived: see live_faces_)
+        faces_[reuse].loops.clear();
+        const Face proto = faces_[reuse];
+        for (size_t k = 0; k < outers.size(); ++k) {
+            int fid = reuse;
+            if (k > 0) {
+                faces_.push_back(proto);
+                fid = (int)faces_.size() - 1;
+                live_faces_.push_back(fid);
+            }
+            faces_[fid].loops.assign(1, cycles[outers[k]]);
+            faces_[fid].alive = true;
+            fids.push_back(fid);
+        }
     }
     for (int hi : holes) {
         // A point on the hole lies strictly inside exactly the outer loops that enclose the hole.
@@ -459,12 +589,14 @@ std::vector<int> DomainMesh::rebuild_faces(const std::vector<int>& hes, int reus
         if (best < 0) { best = 0; ++stats_.warnings; }
         faces_[fids[best]].loops.push_back(cycles[hi]);
     }
-    for (int fid : fids)
-        for (int h : face_half_edges(fid)) half_[h].face = fid;
-    return fids;
+    for (int fid : fids) {
+        for_each_half_edge(fid, [&](int h) { half_[h].face = fid; });
+        touch_face(fid);
+    }
 }
 
 void DomainMesh::remove_edge(int e) {
+    touch_edge_faces(e);
     int h = 2 * e, t = 2 * e + 1;
     int hn = half_[h].next, hp = half_[h].prev, tn = half_[t].next, tp = half_[t].prev;
     if (hn == t && tn == h) {
@@ -481,6 +613,7 @@ void DomainMesh::remove_edge(int e) {
         half_[tp].next = hn; half_[hn].prev = tp;
     }
     edges_[e].alive = false;
+    edge_alive_[e] = 0;
     half_[h].face = half_[t].face = -1;
 }
 
@@ -489,8 +622,10 @@ void DomainMesh::merge_equal_neighbours(const Listener* L) {
     // Each pass removes at least one edge, so there are at most as many passes as edges.
     for (size_t pass = 0; changed && pass <= edges_.size(); ++pass) {
         changed = false;
-        for (size_t e = 0; e < edges_.size(); ++e) {
-            if (!edges_[e].alive) continue;
+        const std::vector<int>& live_edges = live_edge_ids();  // no edge is added while merging
+        for (size_t i = 0; i < live_edges.size(); ++i) {
+            const size_t e = (size_t)live_edges[i];
+            if (!edge_alive_[e]) continue;
             int F = half_[2 * e].face, G = half_[2 * e + 1].face;
             if (F <= 0 || G <= 0) continue;
             const Face &fa = faces_[F], &fb = faces_[G];
@@ -498,20 +633,21 @@ void DomainMesh::merge_equal_neighbours(const Listener* L) {
                          (!fa.infinite && !fb.infinite && same_polynomial(fa.poly, fb.poly));
             if (!equal) continue;
             int keep = std::min(F, G), gone = std::max(F, G);
-            std::vector<int> hes = face_half_edges(F);
-            if (G != F) {
-                std::vector<int> more = face_half_edges(G);
-                hes.insert(hes.end(), more.begin(), more.end());
-            }
+            std::vector<int>& hes = tmp_.merge_hes;
+            hes.clear();
+            for_each_half_edge(F, [&](int h) { hes.push_back(h); });
+            if (G != F) for_each_half_edge(G, [&](int h) { hes.push_back(h); });
             remove_edge((int)e);
             hes.erase(std::remove_if(hes.begin(), hes.end(), [&](int h) { return (h >> 1) == (int)e; }), hes.end());
-            if (gone != keep) faces_[gone].alive = false, faces_[gone].loops.clear();
-            if (hes.empty()) { faces_[keep].alive = false; faces_[keep].loops.clear(); ++stats_.warnings; continue; }
+            if (gone != keep) faces_[gone].alive = false, faces_[gone].loops.clear(), touch_face(gone);
+            if (hes.empty()) { faces_[keep].alive = false; faces_[keep].loops.clear(); touch_face(keep); ++stats_.warnings; continue; }
             // Only half-edges still in a loop (a removed dangling edge takes its tip with it).
-            std::vector<int> live;
+            std::vector<int>& live = tmp_.live;
+            live.clear();
             for (int h : hes)
-                if (edges_[h >> 1].alive) live.push_back(h);
-            std::vector<int> fids = rebuild_faces(live, keep);
+                if (edge_alive_[h >> 1]) live.push_back(h);
+            std::vector<int>& fids = tmp_.fids;
+            rebuild_faces(live, keep, fids);
             if (fids.size() != 1) ++stats_.warnings;
             ++stats_.merges;
             if (L && L->on_merge && gone != keep) L->on_merge(keep, gone);
@@ -520,11 +656,23 @@ void DomainMesh::merge_equal_neighbours(const Listener* L) {
     }
 }
 
+void DomainMesh::replace_loop_start(int face, int from, int to) {
+    if (face < 0) return;
+    for (int& l : faces_[face].loops) {
+        if (l == from) l = to;
+    }
+}
+
 void DomainMesh::dissolve_collinear_vertices() {
-    std::vector<int> degree(vertices_.size(), 0), any_out(vertices_.size(), -1);
-    for (size_t h = 0; h < half_.size(); ++h)
-        if (edges_[h >> 1].alive) { ++degree[half_[h].origin]; any_out[half_[h].origin] = (int)h; }
-    for (size_t v = 3; v < vertices_.size(); ++v) {  // the target's corners stay
+    std::vector<int>& degree = tmp_.degree;
+    std::vector<int>& any_out = tmp_.any_out;
+    degree.assign(vertices_.size(), 0);
+    any_out.assign(vertices_.size(), -1);
+    for (int e : live_edge_ids())
+        for (int h : {2 * e, 2 * e + 1}) { ++degree[half_[h].origin]; any_out[half_[h].origin] = h; }
+    for (int vi : live_vertex_ids()) {
+        const size_t v = (size_t)vi;
+        if (v < 3) continue;  // the target's corners stay
         if (!vertices_[v].alive || degree[v] != 2) continue;
         int o1 = any_out[v];
         int h1 = half_[o1 ^ 1].next == o1 ? -1 : half_[o1].prev;  // incoming to v on o1's face
@@ -543,6 +691,7 @@ void DomainMesh::dissolve_collinear_vertices() {
         if (!same_polynomial(q1, q2, 1e-9) && !same_polynomial(q1, q2 * -1.0, 1e-9)) continue;
         if (dot(d1, d2) < 0 && norm(d1) > kCluster && norm(d2) > kCluster) continue;
         // h1 becomes a -> b, its twin b -> a; e2 goes away.
+        touch_edge_faces(e1);  // (e2 has the same faces)
         int t1 = h1 ^ 1, t2 = h2 ^ 1;  // t2: b -> v, t1: v -> a
         half_[h1].next = half_[h2].next; half_[half_[h2].next].prev = h1;
         half_[t1].origin = b;
@@ -552,14 +701,22 @@ void DomainMesh::dissolve_collinear_vertices() {
         E.curve = RationalCurve{};
         E.curve.n0 = from; E.curve.n1 = to - from;
         E.z0 = 0; E.z1 = 1;
+        set_arc_geometry(e1);
         edges_[e2].alive = false;
+        edge_alive_[e2] = 0;
+        const int fh2 = half_[h2].face, ft2 = half_[t2].face;
         half_[h2].face = half_[t2].face = -1;
         vertices_[v].alive = false;
-        for (Face& f : faces_)
-            for (int& l : f.loops) {
-                if (l == h2) l = h1;
-                if (l == t2) l = t1;
-            }
+        // A loop may start at h2 or t2 only in their own faces (every half-edge of a face's loops
+        // carries that face).
+        replace_loop_start(fh2, h2, h1);
+        replace_loop_start(fh2, t2, t1);
+        replace_loop_start(ft2, h2, h1);
+        replace_loop_start(ft2, t2, t1);
+#ifndef NDEBUG
+        for (const Face& f : faces_)
+            for (int l : f.loops) assert(l != h2 && l != t2);
+#endif
         if (any_out[b] == t2) any_out[b] = t1;
         if (any_out[a] == h2) any_out[a] = h1;
     }
@@ -603,37 +760,54 @@ bool DomainMesh::polish_arc_max(const Quadratic2& q, const Quadratic2& g, Vec2& 
 
 // ---------------------------------------------------------------- the clip primitive
 
-std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadratic2& g_in) {
+std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadratic2& g) {
+    std::vector<SplitPiece> out;
+    split_face_into(f, g, out);
+    return out;
+}
+
+void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<SplitPiece>& out) {
+    out.clear();
     double gs = g_in.scale();
-    if (!(gs > 0)) return {{f, 0}};
+    if (!(gs > 0)) { out.push_back({f, 0}); return; }
     const Quadratic2 g = g_in * (1.0 / gs);
     {
         // Most faces lie wholly on one side: a conservative bound over the face's box says so.
-        Box2 b = face_box(f);
+        Box2 b = cached_face_box(f);
         Interval r = g.range(b.lo, b.hi);
-        if (r.lo > kZero) return {{f, 1}};
-        if (r.hi < -kZero) return {{f, -1}};
+        if (r.lo > kZero) { out.push_back({f, 1}); return; }
+        if (r.hi < -kZero) { out.push_back({f, -1}); return; }
     }
-    std::vector<int> zero_list;  // vertices on the curve (few): a list, not a flag per vertex
+    std::vector<int>& zero_list = tmp_.zero_list;  // vertices on the curve (few): a list, not a flag per vertex
+    zero_list.clear();
     auto mark_zero = [&](int v) {
         if (std::find(zero_list.begin(), zero_list.end(), v) == zero_list.end()) zero_list.push_back(v);
     };
     auto is_zero = [&](int v) { return std::find(zero_list.begin(), zero_list.end(), v) != zero_list.end(); };
 
     // 1. Split the boundary where g changes sign.
-    std::vector<int> hes = face_half_edges(f);
-    std::vector<int> edge_list;
+    std::vector<int>& hes = tmp_.hes;
+    collect_half_edges(f, hes);
+    std::vector<int>& edge_list = tmp_.edge_list;  // each edge once, in the order of `hes`
+    edge_list.clear();
     {
-        std::set<int> seen;
+        const uint64_t seen = tmp_.next_stamp(tmp_.edge_mark, edges_.size());
         for (int h : hes)
-            if (seen.insert(h >> 1).second) edge_list.push_back(h >> 1);
+            if (tmp_.edge_mark[h >> 1] != seen) {
+                tmp_.edge_mark[h >> 1] = seen;
+                edge_list.push_back(h >> 1);
+            }
     }
     for (int e : edge_list) {
-        const RationalCurve curve = edges_[e].curve;
+        const Poly along = edges_[e].curve.compose(g);  // g along the arc, times w^2
+        if (no_sign_change(along, edges_[e].z0, edges_[e].z1)) continue;  // most arcs: nothing to find
+        const RationalCurve curve = edges_[e].curve;   // copies: split_edge may move edges_
         const Quadratic2 eq = edges_[e].equation;
-        std::vector<double> roots = sign_change_roots(curve.compose(g), edges_[e].z0, edges_[e].z1);
+        double roots[kMaxSignChangeRoots];
+        const int nroots = sign_change_roots(along, edges_[e].z0, edges_[e].z1, roots);
         int cur = e;
-        for (double z : roots) {
+        for (int k = 0; k < nroots; ++k) {
+            const double z = roots[k];
             Vec2 p = curve(z);
             int va = half_[2 * cur].origin, vb = half_[2 * cur + 1].origin;
             if (norm(p - vertices_[va].p) <= kSnap) { mark_zero(va); ++stats_.snaps; continue; }
@@ -646,44 +820,85 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
             cur = (int)edges_.size() - 1;
         }
     }
-    hes = face_half_edges(f);
+    collect_half_edges(f, hes);
 
     // 2. Classify vertices on the curve and boundary arcs by side.
     for (int h : hes) {
         Vec2 p = vertices_[half_[h].origin].p;
-        if (std::fabs(g(p)) <= kZero + kOnCurve * norm(g.gradient(p))) mark_zero(half_[h].origin);
+        const double gp = std::fabs(g(p));
+        if (gp <= kZero) { mark_zero(half_[h].origin); continue; }
+        // Far from the curve by a bound of |grad g| (the norm is at most |gx| + |gy|): no root needed.
+        const Vec2 gr = g.gradient(p);
+        if (gp > kZero + kOnCurve * ((std::fabs(gr.x) + std::fabs(gr.y)) * (1 + 1e-12))) continue;
+        if (gp <= kZero + kOnCurve * norm(gr)) mark_zero(half_[h].origin);
     }
-    // Each arc's side, as the signed distance-like value of g at its middle: the arc farthest
-    // from the curve is the one whose side is certain.
-    std::unordered_map<int, double> side;
-    side.reserve(hes.size() * 2);
+    // Each arc's side, as the signed distance-like value of g at its middle,
+    //   sd = |g(m)| <= kZero ? 0 : g(m) / max(|grad g(m)|, 1e-3):
+    // the arc farthest from the curve is the one whose side is certain. Kept per half-edge of
+    // `hes` (stamped; arcs added below have none) as g(m) and |grad g(m)|^2: the sign of sd is that
+    // of g(m), and its value (a root and a division) is only taken where signs disagree.
+    const uint64_t sided = tmp_.next_stamp(tmp_.he_mark, half_.size());
+    if (tmp_.side_val.size() < half_.size()) {
+        tmp_.side_val.resize(half_.size());
+        tmp_.side_n2.resize(half_.size());
+    }
+    auto marked = [&](int h) { return (size_t)h < tmp_.he_mark.size() && tmp_.he_mark[h] == sided; };
+    auto side_value = [&](int h) {
+        const double val = tmp_.side_val[h];
+        return std::fabs(val) <= kZero ? 0.0 : val / std::max(std::sqrt(tmp_.side_n2[h]), 1e-3);
+    };
+    auto side_sign = [&](int h) {  // the sign of side_value(h)
+        const double val = tmp_.side_val[h];
+        if (!(std::fabs(val) <= HUGE_VAL && std::fabs(tmp_.side_n2[h]) < HUGE_VAL)) {  // NaN or inf: be exact
+            const double v = side_value(h);
+            return v > 0 ? 1 : (v < 0 ? -1 : 0);
+        }
+        return std::fabs(val) <= kZero ? 0 : (val > 0 ? 1 : -1);
+    };
+    auto side_of = [&](int h, double& v) {
+        if (!marked(h)) return false;
+        v = side_value(h);
+        return true;
+    };
     int npos = 0, nneg = 0;
     for (int h : hes) {
         const Edge& E = edges_[h >> 1];
         Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
-        double val = g(m), gn = norm(g.gradient(m));
-        side[h] = std::fabs(val) <= kZero ? 0.0 : val / std::max(gn, 1e-3);
-        npos += side[h] > 0;
-        nneg += side[h] < 0;
+        const Vec2 gr = g.gradient(m);
+        tmp_.side_val[h] = g(m);
+        tmp_.side_n2[h] = dot(gr, gr);  // norm(gr) is sqrt of exactly this
+        tmp_.he_mark[h] = sided;
+        const int sg = side_sign(h);
+        npos += sg > 0;
+        nneg += sg < 0;
     }
+    // The sign of the side of the arc of `loop_hes` farthest from the curve (the first of equals).
     auto decided_side = [&](const std::vector<int>& loop_hes) {
-        double best = 0;
-        for (int h : loop_hes) {
-            auto it = side.find(h);
-            if (it != side.end() && std::fabs(it->second) > std::fabs(best)) best = it->second;
-        }
-        return best;
+        bool pos = false, neg = false;
+        for (int h : loop_hes)
+            if (marked(h)) {
+                const int sg = side_sign(h);
+                pos |= sg > 0;
+                neg |= sg < 0;
+            }
+        if (!(pos && neg)) return pos ? 1 : (neg ? -1 : 0);
+        double best = 0, v;
+        for (int h : loop_hes)
+            if (side_of(h, v) && std::fabs(v) > std::fabs(best)) best = v;
+        return best > 0 ? 1 : (best < 0 ? -1 : 0);
     };
 
     // 3. Pieces of the curve g = 0 inside the face, between consecutive crossing points.
-    struct Chord { CurveComponent comp; double t0, t1; int va, vb; };
-    std::vector<Chord> chords;
-    std::vector<int> zverts;
+    std::vector<Chord>& chords = tmp_.chords;
+    chords.clear();
+    std::vector<int>& zverts = tmp_.zverts;
+    zverts.clear();
     for (int h : hes) {
         int v = half_[h].origin;
         if (is_zero(v) && std::find(zverts.begin(), zverts.end(), v) == zverts.end()) zverts.push_back(v);
     }
-    ConicDecomposition dec = decompose_conic(g);
+    ConicDecomposition& dec = tmp_.dec;
+    decompose_conic(g, dec);
     if (dec.type == ConicType::LinePair && dec.components.size() == 2) {
         // The two lines cross at the centre: inside the face it must be a vertex of both.
         const CurveComponent &l1 = dec.components[0], &l2 = dec.components[1];
@@ -701,14 +916,16 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     }
     bool line_like = dec.type == ConicType::Line || dec.type == ConicType::ParallelLines || dec.type == ConicType::LinePair;
     for (const CurveComponent& comp : dec.components) {
-        std::vector<std::pair<double, int>> pts;
+        std::vector<std::pair<double, int>>& pts = tmp_.pts;
+        pts.clear();
         for (int v : zverts) {
             Vec2 p = vertices_[v].p;
             double t = comp.param_of(p);
             if (norm(comp.at(t) - p) <= 1e-7) pts.push_back({t, v});
         }
         std::sort(pts.begin(), pts.end());
-        std::vector<Chord> cand;
+        std::vector<Chord>& cand = tmp_.cand;
+        cand.clear();
         if (comp.closed()) {
             if (pts.empty()) {
                 if (npos + nneg > 0 && point_in_face(f, comp.at(0)) && point_in_face(f, comp.at(M_PI)))
@@ -740,20 +957,24 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     }
 
     if (chords.empty()) {
-        double best = decided_side(hes);
-        int s = best > 0 ? 1 : (best < 0 ? -1 : 0);
+        int s = decided_side(hes);
         if (s == 0) {
             Vec2 p;
             if (interior_point(f, p)) s = g(p) > 0 ? 1 : (g(p) < 0 ? -1 : 0);
         }
-        return {{f, s}};
+        out.push_back({f, s});
+        return;
     }
 
     // 4. Insert the chords, each as a path of well-conditioned arcs.
     ArcKind kind = line_like && g_in.is_linear() ? ArcKind::RegionBoundary : ArcKind::Conic;
     for (const Chord& c : chords) {
-        std::vector<CurveComponent::Piece> pieces = c.comp.pieces(c.t0, c.t1);
-        std::vector<int> verts, es;
+        std::vector<CurveComponent::Piece>& pieces = tmp_.arc_pieces;
+        c.comp.pieces(c.t0, c.t1, pieces);
+        std::vector<int>& verts = tmp_.verts;
+        std::vector<int>& es = tmp_.es;
+        verts.clear();
+        es.clear();
         int start = c.va >= 0 ? c.va : add_vertex(c.comp.at(c.t0));
         verts.push_back(start);
         for (size_t k = 0; k < pieces.size(); ++k) {
@@ -769,35 +990,42 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     }
 
     // 5. The face's half-edges now form several loops: one face per outer loop.
-    std::vector<int> fids = rebuild_faces(hes, f);
-    std::vector<SplitPiece> out;
+    std::vector<int>& fids = tmp_.fids;
+    rebuild_faces(hes, f, fids);
+    std::vector<int>& fh = tmp_.fh;
     for (int fid : fids) {
         int pos = 0, neg = 0;
-        std::vector<int> fh = face_half_edges(fid);
-        for (int h : fh) {
-            auto it = side.find(h);
-            if (it != side.end()) { pos += it->second > 1e-6; neg += it->second < -1e-6; }
-        }
+        collect_half_edges(fid, fh);
+        double v;
+        for (int h : fh)
+            if (side_of(h, v)) { pos += v > 1e-6; neg += v < -1e-6; }
         if (pos > 0 && neg > 0) ++stats_.warnings;
-        double best = decided_side(fh);
-        int s = best > 0 ? 1 : (best < 0 ? -1 : 0);
+        int s = decided_side(fh);
         if (s == 0) {
             Vec2 p;
             if (interior_point(fid, p)) s = g(p) > 0 ? 1 : (g(p) < 0 ? -1 : 0);
         }
         out.push_back({fid, s});
     }
-    return out;
 }
 
 // ---------------------------------------------------------------- inserting a source
 
-void DomainMesh::insert(const SourceProjection& src, const std::function<bool(int)>& cull, const Listener* L) {
-    std::vector<int> snapshot;
-    for (size_t f = 1; f < faces_.size(); ++f)
-        if (faces_[f].alive) snapshot.push_back((int)f);
+void DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listener* L) {
+    std::vector<int>& snapshot = tmp_.snapshot;
+    snapshot.clear();
+    for (int f : live_face_ids()) snapshot.push_back(f);
     const size_t R = src.regions.size();
+    assert(R <= 7);
 
+    // The debugger's view of a split: the pieces' ids (built only when someone listens).
+    auto report_split = [&](int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve) {
+        if (!(L && L->on_split && pieces.size() > 1)) return;
+        std::vector<int>& ids = tmp_.ids;
+        ids.clear();
+        for (const SplitPiece& pc : pieces) ids.push_back(pc.face);
+        L->on_split(parent, ids, curve);
+    };
     auto apply = [&](int P, const SourceRegion& reg) {
         DomainLabel lab{(int32_t)src.source, reg.kind};
         if (faces_[P].infinite) {
@@ -808,12 +1036,9 @@ void DomainMesh::insert(const SourceProjection& src, const std::function<bool(in
         }
         if (same_polynomial(faces_[P].poly, reg.poly)) return;  // the existing domain keeps it
         Quadratic2 Q = faces_[P].poly - reg.poly;                // > 0 where the source is nearer
-        std::vector<SplitPiece> pieces = split_face(P, Q);
-        if (L && L->on_split && pieces.size() > 1) {
-            std::vector<int> ids;
-            for (auto& pc : pieces) ids.push_back(pc.face);
-            L->on_split(P, ids, Q);
-        }
+        std::vector<SplitPiece>& pieces = tmp_.pieces;
+        split_face_into(P, Q, pieces);
+        report_split(P, pieces, Q);
         for (const SplitPiece& pc : pieces)
             if (pc.sign > 0) {
                 DomainLabel old = faces_[pc.face].label;
@@ -823,19 +1048,26 @@ void DomainMesh::insert(const SourceProjection& src, const std::function<bool(in
     };
 
     // Each region clipped to T': a face whose box misses it needs no cut for it, and a face whose
-    // box lies inside it (the region is convex) needs none either.
-    std::vector<std::vector<Vec2>> region_poly(R);
+    // box lies inside it (the region is convex) needs none either. The clipped regions' boxes are
+    // the same for every face, so they are taken once.
+    Box2 region_box[7];
+    bool region_empty[7];
     {
-        std::vector<Vec2> tri;
-        for (int h : face_half_edges(0)) tri.push_back(vertices_[half_[h].origin].p);
+        std::vector<Vec2>& tri = tmp_.tri;
+        tri.clear();
+        for_each_half_edge(0, [&](int h) { tri.push_back(vertices_[half_[h].origin].p); });
         std::reverse(tri.begin(), tri.end());  // the outside loop runs clockwise
-        for (size_t k = 0; k < R; ++k) region_poly[k] = clip_convex(tri, src.regions[k].planes);
+        for (size_t k = 0; k < R; ++k) {
+            std::vector<Vec2>& P = tmp_.clipped;
+            P.assign(tri.begin(), tri.end());
+            clip_convex_in_place(P, src.regions[k].planes, tmp_.clip_tmp);
+            region_empty[k] = P.empty();
+            for (Vec2 p : P) region_box[k].add(p);
+        }
     }
     auto box_misses = [&](const Box2& b, size_t k) {
-        const std::vector<Vec2>& P = region_poly[k];
-        if (P.empty()) return true;
-        Box2 rb;
-        for (Vec2 p : P) rb.add(p);
+        if (region_empty[k]) return true;
+        const Box2& rb = region_box[k];
         const double m = 1e-9;
         return rb.hi.x < b.lo.x - m || rb.lo.x > b.hi.x + m || rb.hi.y < b.lo.y - m || rb.lo.y > b.hi.y + m;
     };
@@ -849,35 +1081,37 @@ void DomainMesh::insert(const SourceProjection& src, const std::function<bool(in
         return true;
     };
 
+    std::vector<int>& pending = tmp_.pending;
+    std::vector<int>& inside = tmp_.inside;
+    std::vector<int>& rest = tmp_.rest;
+    std::vector<int>& cur = tmp_.cur;
+    std::vector<int>& nxt = tmp_.nxt;
+    std::vector<SplitPiece>& hp_pieces = tmp_.hp_pieces;
     for (int F : snapshot) {
         if (!faces_[F].alive) continue;
         if (cull && cull(F)) continue;
-        std::vector<int> pending{F};
+        pending.assign(1, F);
         for (size_t k = 0; k < R && !pending.empty(); ++k) {
             const SourceRegion& reg = src.regions[k];
-            std::vector<int> inside;
+            inside.clear();
             if (k + 1 == R) {
                 inside.swap(pending);
-            } else if (pending.size() == 1 && pending[0] == F && box_misses(face_box(F), k)) {
+            } else if (pending.size() == 1 && pending[0] == F && box_misses(cached_face_box(F), k)) {
                 continue;
-            } else if (pending.size() == 1 && pending[0] == F && box_inside(face_box(F), k)) {
+            } else if (pending.size() == 1 && pending[0] == F && box_inside(cached_face_box(F), k)) {
                 inside.swap(pending);
             } else {
-                std::vector<int> rest;
+                rest.clear();
                 for (int P : pending) {
-                    std::vector<int> cur{P};
+                    cur.assign(1, P);
                     for (const HalfPlane& hp : reg.planes) {
                         if (hp.kind == HalfPlane::All) continue;
                         if (hp.kind == HalfPlane::None) { rest.insert(rest.end(), cur.begin(), cur.end()); cur.clear(); break; }
-                        std::vector<int> nxt;
+                        nxt.clear();
                         for (int c : cur) {
-                            std::vector<SplitPiece> pieces = split_face(c, hp.as_quadratic());
-                            if (L && L->on_split && pieces.size() > 1) {
-                                std::vector<int> ids;
-                                for (auto& pc : pieces) ids.push_back(pc.face);
-                                L->on_split(c, ids, hp.as_quadratic());
-                            }
-                            for (const SplitPiece& pc : pieces) (pc.sign > 0 ? nxt : rest).push_back(pc.face);
+                            split_face_into(c, hp.as_quadratic(), hp_pieces);
+                            report_split(c, hp_pieces, hp.as_quadratic());
+                            for (const SplitPiece& pc : hp_pieces) (pc.sign > 0 ? nxt : rest).push_back(pc.face);
                         }
                         cur.swap(nxt);
                         if (cur.empty()) break;
@@ -895,19 +1129,21 @@ void DomainMesh::insert(const SourceProjection& src, const std::function<bool(in
 
 // ---------------------------------------------------------------- maxima
 
-double DomainMesh::edge_max(int e, const Quadratic2& q, Vec2* where) const {
+double DomainMesh::edge_max(int e, const Quadratic2& q, Vec2* where) {
     const Edge& E = edges_[e];
-    if (E.max_cached && std::memcmp(&E.max_poly, &q, sizeof q) == 0 && E.max_z0 == E.z0 && E.max_z1 == E.z1) {
-        if (where) *where = E.max_point;
-        return E.max_value;
+    assert(curved_of_[e] >= 0);  // only curved arcs have interior maxima
+    EdgeMax& C = curved_[curved_of_[e]].max;
+    if (C.cached && std::memcmp(&C.poly, &q, sizeof q) == 0 && C.z0 == E.z0 && C.z1 == E.z1) {
+        if (where) *where = C.point;
+        return C.value;
     }
-    double v = edge_max_uncached(e, q, where ? where : &E.max_point);
-    E.max_cached = true;
-    E.max_poly = q;
-    E.max_z0 = E.z0;
-    E.max_z1 = E.z1;
-    E.max_value = v;
-    if (where) E.max_point = *where;
+    double v = edge_max_uncached(e, q, where ? where : &C.point);
+    C.cached = true;
+    C.poly = q;
+    C.z0 = E.z0;
+    C.z1 = E.z1;
+    C.value = v;
+    if (where) C.point = *where;
     return v;
 }
 
@@ -924,24 +1160,32 @@ double DomainMesh::edge_max_uncached(int e, const Quadratic2& q, Vec2* where) co
 
 std::vector<Candidate> DomainMesh::update_maxima() {
     std::vector<Candidate> out;
-    std::vector<double> vval(vertices_.size(), HUGE_VAL);
-    for (size_t f = 1; f < faces_.size(); ++f) {
+    update_maxima(out);
+    return out;
+}
+
+void DomainMesh::update_maxima(std::vector<Candidate>& out) {
+    out.clear();
+    std::vector<double>& vval = tmp_.vval;
+    vval.assign(vertices_.size(), HUGE_VAL);
+    for (int fi : live_face_ids()) {
+        const size_t f = (size_t)fi;
         Face& F = faces_[f];
-        if (!F.alive) continue;
         F.max_value = F.infinite ? HUGE_VAL : -HUGE_VAL;
         if (F.infinite) continue;
-        for (int h : face_half_edges((int)f)) {
+        for_each_half_edge((int)f, [&](int h) {
             int v = half_[h].origin;
             double val = F.poly(vertices_[v].p);
             F.max_value = std::max(F.max_value, val);
             vval[v] = std::min(vval[v], val);  // equal up to rounding; the smallest is the safest
-        }
+        });
     }
-    for (size_t v = 0; v < vertices_.size(); ++v)
-        if (vertices_[v].alive && vval[v] < HUGE_VAL) out.push_back({vertices_[v].p, vval[v], (int)v, -1});
-    for (size_t e = 0; e < edges_.size(); ++e) {
+    for (int v : live_vertex_ids())
+        if (vval[v] < HUGE_VAL) out.push_back({vertices_[v].p, vval[v], v, -1});
+    for (int ei : live_edge_ids()) {
+        const size_t e = (size_t)ei;
         const Edge& E = edges_[e];
-        if (!E.alive || E.curve.straight()) continue;
+        if (E.curve.straight()) continue;
         int F = half_[2 * e].face, G = half_[2 * e + 1].face;
         int use = F > 0 && !faces_[F].infinite ? F : G;
         if (use <= 0 || faces_[use].infinite) continue;
@@ -952,7 +1196,6 @@ std::vector<Candidate> DomainMesh::update_maxima() {
             if (fid > 0 && !faces_[fid].infinite) faces_[fid].max_value = std::max(faces_[fid].max_value, faces_[fid].poly(p));
         out.push_back({p, val, -1, (int)e});
     }
-    return out;
 }
 
 // ---------------------------------------------------------------- invariants

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "conic.h"
@@ -42,6 +43,21 @@ struct Candidate {              // a point where the maximum of d^2 over T' may 
     int edge = -1;              // the interior maximum of a curved arc
 };
 
+// `cull(face)` for DomainMesh::insert: a non-owning reference to any callable bool(int), or
+// nothing. It is called once per face and insertion, so a plain function pointer, not a
+// std::function (which would allocate for a lambda with several captures).
+class FaceCull {
+public:
+    FaceCull() = default;
+    template <class F, class = std::enable_if_t<!std::is_same_v<std::decay_t<F>, FaceCull>>>
+    FaceCull(const F& f) : ctx_(&f), fn_([](const void* c, int face) { return (bool)(*static_cast<const F*>(c))(face); }) {}
+    explicit operator bool() const { return fn_ != nullptr; }
+    bool operator()(int face) const { return fn_(ctx_, face); }
+private:
+    const void* ctx_ = nullptr;
+    bool (*fn_)(const void*, int) = nullptr;
+};
+
 class DomainMesh {
 public:
     struct Vertex { Vec2 p; bool alive = true; };
@@ -52,11 +68,6 @@ public:
         ArcKind kind = ArcKind::Conic;
         CurveKind curve_kind = CurveKind::Line;
         bool alive = true;
-        // Cache of the arc's interior maximum for one quadratic (faces rarely change).
-        mutable bool max_cached = false;
-        mutable Quadratic2 max_poly;
-        mutable double max_z0 = 0, max_z1 = 0, max_value = 0;
-        mutable Vec2 max_point;
     };
     struct HalfEdge { int origin = -1, next = -1, prev = -1, face = -1; };
     struct Face {
@@ -80,11 +91,11 @@ public:
 
     // Insert one source (its regions with their quadratics): d^2 := min(d^2, d_T^2).
     // `cull(face)` may return true for faces the source provably cannot reach.
-    void insert(const SourceProjection& src, const std::function<bool(int face)>& cull = {},
-                const Listener* listener = nullptr);
+    void insert(const SourceProjection& src, FaceCull cull = {}, const Listener* listener = nullptr);
 
     // Maxima of each face's quadratic on its boundary; returns every candidate point.
     std::vector<Candidate> update_maxima();
+    void update_maxima(std::vector<Candidate>& out);  // the same into `out` (its storage reused)
 
     // Invariants; returns an empty string when they hold, else a description of the first failure.
     std::string validate(double area_tol = 1e-9) const;
@@ -104,6 +115,7 @@ public:
     bool interior_point(int f, Vec2& out) const;     // some point strictly inside face f
     bool near_boundary(int f, Vec2 p, double tol) const;  // p within tol of face f's boundary
     Box2 face_box(int f) const;                      // bounding box, bulging arcs included
+    Box2 cached_face_box(int f);                     // the same, kept until the mesh is edited
     int face_at(Vec2 p) const;                       // the live inner face containing p, or -1
     std::vector<int> face_half_edges(int f) const;   // all half-edges of all loops of f
     std::vector<Vec2> sample_loop(int h, int per_arc) const;  // a polyline along a loop
@@ -123,18 +135,92 @@ private:
     std::vector<Face> faces_;
     Stats stats_;
 
+    // face_box() is asked for many times per insertion (culling, region tests, split_face), mostly
+    // of faces nothing has touched since. Every edit of a face's loops, of the half-edges, arcs or
+    // vertices on them stamps the face (touch_face: face_stamp_ = ++clock_); a box is kept with
+    // the clock it was computed at and used while no later stamp says the face changed.
+    uint64_t clock_ = 0;
+    std::vector<uint64_t> face_stamp_, box_stamp_;
+    std::vector<Box2> box_cache_;
+    void touch_face(int f);
+    void touch_edge_faces(int e);  // the faces on both sides of edge e
+
+    // edges_[e].alive, packed, and the live edges in increasing order (dead ones dropped lazily):
+    // the scans in id order (merging, dissolving, maxima) skip the many dead edges cheaply.
+    std::vector<uint8_t> edge_alive_;
+    std::vector<int> live_edges_;
+    const std::vector<int>& live_edge_ids();
+    // The same for the inner faces (ids >= 1) and the vertices: ids only grow, and what dies stays
+    // dead, so appending at birth and dropping the dead before a scan keeps them in order.
+    std::vector<int> live_faces_, live_vertices_;
+    const std::vector<int>& live_face_ids();
+    const std::vector<int>& live_vertex_ids();
+
+    // What the geometry queries need of an arc that depends on its curve and [z0, z1] alone,
+    // computed when these are set (set_arc_geometry), so the queries only read it. A straight arc
+    // has none.
+    struct ArcGeometry {
+        double segment = 0;            // signed area between the arc and its chord, z0 -> z1
+        Box2 bulge;                    // the arc's extreme points in x and in y
+        int nturns = 0;                // interior parameters where y turns (for ray crossings)
+        double turns[8];
+    };
+    // The cache of a curved arc's interior maximum for one quadratic (faces rarely change).
+    struct EdgeMax { bool cached = false; Quadratic2 poly; double z0 = 0, z1 = 0, value = 0; Vec2 point; };
+    // Kept for curved arcs only (most arcs are straight): curved_of_[e] indexes curved_, or is -1.
+    struct CurvedArc { ArcGeometry geo; EdgeMax max; };
+    std::vector<int> curved_of_;
+    std::vector<CurvedArc> curved_;
+    const ArcGeometry& arc_geometry(int e) const { return curved_[curved_of_[e]].geo; }
+    void set_arc_geometry(int e);
+
+    // A piece of the curve g = 0 to insert into a face (split_face): curve parameters t0..t1,
+    // from vertex va to vb (-1, -1 for a closed curve wholly inside).
+    struct Chord { CurveComponent comp; double t0, t1; int va, vb; };
+
+    // Buffers reused across calls so the insertion does not allocate in its inner loops. Their
+    // contents never outlive one call; a copy of the mesh starts with empty ones.
+    struct Scratch {
+        std::vector<int> snapshot, pending, inside, rest, cur, nxt, ids;
+        std::vector<SplitPiece> pieces, hp_pieces;
+        std::vector<int> hes, edge_list, zero_list, zverts, fh, fids;
+        std::vector<uint64_t> edge_mark, he_mark, seen_mark;  // an entry is marked if it equals its stamp
+        uint64_t stamp = 0;
+        std::vector<double> side_val, side_n2;     // per half-edge, valid where he_mark is set
+        std::vector<int> cycles, outers, holes, merge_hes, live;
+        std::vector<double> areas, vval;
+        std::vector<int> degree, any_out;
+        ConicDecomposition dec;
+        std::vector<Vec2> tri, clipped, clip_tmp;
+        std::vector<Chord> chords, cand;
+        std::vector<std::pair<double, int>> pts;
+        std::vector<int> verts, es, wedge_cands;
+        std::vector<CurveComponent::Piece> arc_pieces;
+        Scratch() = default;
+        Scratch(const Scratch&) {}
+        Scratch& operator=(const Scratch&) { return *this; }
+        uint64_t next_stamp(std::vector<uint64_t>& marks, size_t n);  // a fresh stamp, marks sized >= n
+    };
+    Scratch tmp_;
+
+    template <class Fn> void for_each_half_edge(int f, Fn&& fn) const;  // in face_half_edges() order
+    void collect_half_edges(int f, std::vector<int>& out) const;
+    void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out);
+    bool near_arc(int h, Vec2 p, double tol) const;  // p within tol of half-edge h's arc
+
     int add_vertex(Vec2 p);
     int add_edge(const RationalCurve& c, double z0, double z1, const Quadratic2& eq, ArcKind kind, CurveKind ck);
     int target(int h) const { return half_[h ^ 1].origin; }
     Vec2 he_point(int h, double s) const;            // s in [0,1] along the half-edge's direction
     Vec2 out_tangent(int h) const;                   // direction leaving origin(h)
     int loop_crossings(int start, Vec2 p) const;      // ray crossings of one loop (parity: inside)
-    int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2) const;
+    int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2);
     void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
-    std::vector<int> rebuild_faces(const std::vector<int>& hes, int reuse);
+    void rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids);
     void remove_edge(int e);
     void dissolve_collinear_vertices();
-    double edge_max(int e, const Quadratic2& q, Vec2* where) const;
+    double edge_max(int e, const Quadratic2& q, Vec2* where);
+    void replace_loop_start(int face, int from, int to);
     double edge_max_uncached(int e, const Quadratic2& q, Vec2* where) const;
     bool polish_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& p) const;
     bool polish_arc_max(const Quadratic2& q, const Quadratic2& g, Vec2& p) const;

@@ -183,10 +183,17 @@ double source_distance2(const TargetFrame& F, const std::array<Vec3, 3>& s, Vec2
 }
 
 std::vector<Vec2> clip_convex(std::vector<Vec2> poly, const std::vector<HalfPlane>& planes) {
+    std::vector<Vec2> tmp;
+    clip_convex_in_place(poly, planes, tmp);
+    return poly;
+}
+
+void clip_convex_in_place(std::vector<Vec2>& poly, const std::vector<HalfPlane>& planes, std::vector<Vec2>& tmp) {
     for (const HalfPlane& h : planes) {
         if (h.kind == HalfPlane::All) continue;
-        if (h.kind == HalfPlane::None) return {};
-        std::vector<Vec2> out;
+        if (h.kind == HalfPlane::None) { poly.clear(); return; }
+        std::vector<Vec2>& out = tmp;
+        out.clear();
         size_t n = poly.size();
         for (size_t i = 0; i < n; ++i) {
             Vec2 p = poly[i], q = poly[(i + 1) % n];
@@ -197,7 +204,6 @@ std::vector<Vec2> clip_convex(std::vector<Vec2> poly, const std::vector<HalfPlan
         poly.swap(out);
         if (poly.empty()) break;
     }
-    return poly;
 }
 
 }  // namespace hlens

@@ -59,5 +59,7 @@ double source_distance2(const TargetFrame& frame, const std::array<Vec3, 3>& sou
 
 // A convex polygon: the target triangle clipped by half-planes (empty if nothing is left).
 std::vector<Vec2> clip_convex(std::vector<Vec2> poly, const std::vector<HalfPlane>& planes);
+// The same on `poly` itself, with `tmp` as the second buffer (both keep their storage).
+void clip_convex_in_place(std::vector<Vec2>& poly, const std::vector<HalfPlane>& planes, std::vector<Vec2>& tmp);
 
 }  // namespace hlens

@@ -240,12 +240,24 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
     }
     // A face whose largest value is below the source's smallest possible value over the face is
     // out of its reach: d_T >= |c - T| - r on the disc (c, r) holding the face.
+    // Most faces are culled, and most of those already by a lower bound of d from the source's
+    // bounding ball (centre sb, radius rb): the computed d is at least |c - sb| - rb less the
+    // rounding of the point-triangle distance (well below `slack`), so where the bound culls, d
+    // culls too, and only the other faces need the exact distance.
+    const Vec3 sb = (sc[0] + sc[1] + sc[2]) / 3.0;
+    const double rb = std::max({norm(sc[0] - sb), norm(sc[1] - sb), norm(sc[2] - sb)}) * (1 + 1e-12);
+    double mag = rb + 4 * frame_.scale;
+    for (const Vec3& p : {sc[0], frame_.origin})
+        mag += std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    const double slack = 1e-11 * mag;
     auto cull = [&](int f) {
         const DomainMesh::Face& F = mesh_->faces()[f];
         if (F.infinite || !(F.max_value < HUGE_VAL)) return false;
-        Box2 b = mesh_->face_box(f);
+        Box2 b = mesh_->cached_face_box(f);
         Vec2 c = 0.5 * (b.lo + b.hi);
         double r = 0.5 * norm(b.hi - b.lo) * (1 + 1e-9) + 1e-12;
+        const double dl = (norm(frame_.to_world(c) - sb) * (1 - 1e-14) - rb - slack) / frame_.scale * (1 - 1e-14);
+        if (dl > r && (dl - r) * (dl - r) > F.max_value * (1 + 1e-9)) return true;
         double d = std::sqrt(source_distance2(frame_, sc, c));
         return d > r && (d - r) * (d - r) > F.max_value * (1 + 1e-9);
     };
@@ -259,7 +271,7 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
 
 void TargetSolver::update_maximum() {
     const double sc2 = frame_.scale * frame_.scale;
-    candidates_ = mesh_->update_maxima();
+    mesh_->update_maxima(candidates_);  // reuses the vector's storage
     double best = -HUGE_VAL;
     Vec2 where;
     for (const Candidate& c : candidates_) {

@@ -409,3 +409,78 @@ TEST(Driver, FarFromTheOrigin) {
     EXPECT_LE(fast.a_to_b.lower, fast.a_to_b.distance);
     EXPECT_GE(fast.a_to_b.upper, fast.a_to_b.distance);
 }
+
+// ---------------------------------------------------------------- the domain mesh's kept geometry
+
+// The domain mesh keeps what its geometry queries need (face boxes between edits, each curved
+// arc's area against its chord, bulge and turning points): after every insertion of random
+// sources, these must agree with the boundary sampled densely (an independent polyline), and the
+// kept boxes with freshly computed ones.
+TEST(DomainCaches, KeptGeometryMatchesTheSampledBoundary) {
+    std::mt19937 rng(31);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int curved_faces = 0;
+    for (int trial = 0; trial < 12; ++trial) {
+        std::array<Vec3, 3> tc{Vec3{0, 0, 0}, Vec3{1, 0.1 * U(rng), 0.05 * U(rng)}, Vec3{0.3 * U(rng), 0.9, 0.1 * U(rng)}};
+        TargetFrame frame = TargetFrame::make(tc);
+        ASSERT_FALSE(frame.degenerate);
+        const auto& o = frame.ccw_order;
+        DomainMesh dm(std::array<Vec2, 3>{frame.corners[o[0]], frame.corners[o[1]], frame.corners[o[2]]});
+        for (int s = 0; s < 14; ++s) {
+            Vec3 c{0.4 + 0.5 * U(rng), 0.4 + 0.5 * U(rng), 0.25 * U(rng)};
+            std::array<Vec3, 3> sc;
+            for (Vec3& p : sc) p = c + Vec3{0.35 * U(rng), 0.35 * U(rng), 0.2 * U(rng)};
+            dm.insert(project_source(frame, sc, (uint32_t)s));
+            ASSERT_EQ(dm.validate(), "") << "trial " << trial << " source " << s;
+            for (size_t f = 1; f < dm.faces().size(); ++f) {
+                if (!dm.faces()[f].alive) continue;
+                const Box2 kept = dm.cached_face_box((int)f), fresh = dm.face_box((int)f);
+                ASSERT_TRUE(kept.lo == fresh.lo && kept.hi == fresh.hi) << "face " << f;
+                Box2 sampled;
+                std::vector<Vec2> poly;  // the outer loop as a dense polyline
+                bool curved = false;
+                for (size_t l = 0; l < dm.faces()[f].loops.size(); ++l) {
+                    const int start = dm.faces()[f].loops[l];
+                    std::vector<Vec2> pts = dm.sample_loop(start, 2000);
+                    for (Vec2 p : pts) sampled.add(p);
+                    // The loop's area against the shoelace area of the polyline.
+                    double shoelace = 0;
+                    for (size_t i = 0; i < pts.size(); ++i) shoelace += 0.5 * cross(pts[i], pts[(i + 1) % pts.size()]);
+                    EXPECT_NEAR(dm.loop_area(start), shoelace, 1e-6) << "face " << f;
+                    if (l == 0) poly = pts;
+                    int h = start;
+                    do {
+                        curved |= !dm.edges()[h >> 1].curve.straight();
+                        h = dm.half_edges()[h].next;
+                    } while (h != start);
+                }
+                curved_faces += curved;
+                const double tol = 1e-6;
+                EXPECT_LE(fresh.lo.x, sampled.lo.x + 1e-12);
+                EXPECT_LE(fresh.lo.y, sampled.lo.y + 1e-12);
+                EXPECT_GE(fresh.hi.x, sampled.hi.x - 1e-12);
+                EXPECT_GE(fresh.hi.y, sampled.hi.y - 1e-12);
+                EXPECT_GE(fresh.lo.x, sampled.lo.x - tol);
+                EXPECT_GE(fresh.lo.y, sampled.lo.y - tol);
+                EXPECT_LE(fresh.hi.x, sampled.hi.x + tol);
+                EXPECT_LE(fresh.hi.y, sampled.hi.y + tol);
+                // Inside tests against the polyline's crossing parity, away from the boundary
+                // (faces with holes are skipped: their polyline would need all loops).
+                if (dm.faces()[f].loops.size() != 1) continue;
+                for (int k = 0; k < 20; ++k) {
+                    Vec2 p{fresh.lo.x + (fresh.hi.x - fresh.lo.x) * (0.5 + 0.5 * U(rng)),
+                           fresh.lo.y + (fresh.hi.y - fresh.lo.y) * (0.5 + 0.5 * U(rng))};
+                    if (dm.near_boundary((int)f, p, 1e-4)) continue;
+                    bool in = false;
+                    for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+                        if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
+                            p.x < poly[j].x + (p.y - poly[j].y) / (poly[i].y - poly[j].y) * (poly[i].x - poly[j].x))
+                            in = !in;
+                    EXPECT_EQ(dm.point_in_face((int)f, p), in) << "face " << f << " at " << p.x << ", " << p.y;
+                }
+            }
+            dm.update_maxima();
+        }
+    }
+    EXPECT_GT(curved_faces, 20);  // conic arcs were exercised
+}

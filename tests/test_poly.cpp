@@ -1,0 +1,228 @@
+// Root isolation (core/poly.h) and the composition of a quadratic with an arc (core/conic.h)
+// against independent oracles: polynomials built from known roots, a textbook bisection written
+// out here, dense evaluation, and direct evaluation of q along the curve.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "conic.h"
+#include "poly.h"
+
+using namespace hlens;
+
+namespace {
+
+// a * prod (x - r_i), expanded.
+Poly from_roots(double a, const std::vector<double>& roots) {
+    Poly p;
+    p.deg = 0;
+    p.c[0] = a;
+    for (double r : roots) {
+        Poly f;
+        f.deg = 1;
+        f.c[0] = -r;
+        f.c[1] = 1;
+        p = p * f;
+    }
+    return p;
+}
+
+// The textbook bisection the library's must match bit for bit: evaluate p at every midpoint.
+double plain_bisection(const Poly& p, double a, double b, double fa) {
+    for (int it = 0; it < 200; ++it) {
+        double m = 0.5 * (a + b);
+        if (m <= a || m >= b) break;
+        double fm = p(m);
+        if (fm == 0.0) return m;
+        if ((fm < 0) == (fa < 0)) { a = m; fa = fm; } else { b = m; }
+    }
+    return 0.5 * (a + b);
+}
+
+bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+}  // namespace
+
+TEST(Poly, RootsOfProductsOfKnownRoots) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int checked = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const double lo = -0.7 + 0.2 * U(rng), hi = 0.8 + 0.2 * U(rng);
+        std::vector<double> simple, doubled;
+        const int ns = 1 + trial % 5, nd = trial % 3 == 0 ? 1 : 0;
+        for (int k = 0; k < ns; ++k) simple.push_back(1.2 * U(rng));
+        for (int k = 0; k < nd && ns + 2 * nd <= 7; ++k) doubled.push_back(0.9 * U(rng));
+        std::vector<double> all = simple;
+        for (double r : doubled) all.insert(all.end(), {r, r});
+        const double scale = std::pow(10.0, 6 * U(rng));
+        Poly p = from_roots(scale, all);
+        // Separated roots only: the oracle is the roots themselves, up to a tolerance.
+        std::vector<double> sorted = all;
+        std::sort(sorted.begin(), sorted.end());
+        bool separated = true;
+        for (size_t i = 0; i + 1 < sorted.size(); ++i)
+            if (sorted[i + 1] - sorted[i] < 1e-3 && !(std::count(doubled.begin(), doubled.end(), sorted[i]) > 0)) separated = false;
+        for (double r : all)
+            if (std::fabs(r - lo) < 1e-3 || std::fabs(r - hi) < 1e-3) separated = false;
+        for (double r : doubled)
+            for (double s : simple) separated &= std::fabs(r - s) > 1e-3;
+        if (!separated) continue;
+        std::vector<double> expect;
+        for (double r : simple)
+            if (r > lo && r < hi) expect.push_back(r);
+        std::sort(expect.begin(), expect.end());
+        std::vector<double> got = sign_change_roots(p, lo, hi);
+        // A double root is a touch, not a sign change; as evaluated it may dip across zero, and
+        // then shows as two points right beside it (the documented behaviour): drop those.
+        for (double r : doubled) {
+            auto near = [&](double x) { return std::fabs(x - r) < 1e-5; };
+            const long k = std::count_if(got.begin(), got.end(), near);
+            EXPECT_TRUE(k == 0 || k == 2) << "trial " << trial;
+            got.erase(std::remove_if(got.begin(), got.end(), near), got.end());
+        }
+        ASSERT_EQ(got.size(), expect.size()) << "trial " << trial;
+        for (size_t i = 0; i < got.size(); ++i) EXPECT_NEAR(got[i], expect[i], 1e-7) << "trial " << trial;
+        // The allocation-free form gives the same points.
+        double arr[kMaxSignChangeRoots];
+        const int n = sign_change_roots(p, lo, hi, arr);
+        const std::vector<double> all_got = sign_change_roots(p, lo, hi);
+        ASSERT_EQ(n, (int)all_got.size());
+        for (int i = 0; i < n; ++i) EXPECT_TRUE(same_bits(arr[i], all_got[i]));
+        ++checked;
+    }
+    EXPECT_GT(checked, 1000);
+}
+
+TEST(Poly, BisectionMatchesThePlainOneBitForBit) {
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> U(-1, 1);
+    long compared = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const int deg = 1 + trial % 5;
+        Poly p;
+        p.deg = deg;
+        const int kind = trial % 7;
+        for (int i = 0; i <= deg; ++i) p.c[i] = U(rng) * std::pow(10.0, kind == 3 ? 8 * U(rng) : U(rng));
+        if (kind == 4) p.c[1] *= 1e-12;                            // nearly flat
+        if (kind == 5) p.c[0] = -(p.c[1] * 0.25 + p.c[2] * 0.0625);  // a root near 0.25 (exactly, for a line)
+        double a = U(rng), b = a + std::pow(10.0, -6 * std::fabs(U(rng)));  // wide to tiny intervals
+        if (kind == 6) { a = 1e6 + U(rng); b = a + 1; }                       // far from 0
+        if (trial % 2 == 0) {  // a root inside [a, b] by construction, the others anywhere
+            std::vector<double> roots{a + (b - a) * (0.5 + 0.499 * U(rng))};
+            for (int i = 1; i < deg; ++i) roots.push_back(3 * U(rng));
+            p = from_roots(std::pow(10.0, 3 * U(rng)), roots);
+        }
+        const double fa = p(a), fb = p(b);
+        if (!((fa < 0 && fb > 0) || (fa > 0 && fb < 0))) continue;
+        const double want = plain_bisection(p, a, b, fa), got = bisect_root(p, a, b, fa);
+        ASSERT_TRUE(same_bits(want, got)) << "trial " << trial << ": " << want << " vs " << got;
+        ++compared;
+    }
+    EXPECT_GT(compared, 3000);
+    // A polynomial that is exactly zero at a midpoint returns that midpoint.
+    Poly line;
+    line.deg = 1;
+    line.c[0] = -0.5;
+    line.c[1] = 1;
+    EXPECT_EQ(bisect_root(line, 0, 1, line(0)), 0.5);
+}
+
+TEST(Poly, OneSignOnIsNeverWrong) {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int said_yes = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        const int deg = trial % 6;
+        Poly p;
+        p.deg = deg;
+        for (int i = 0; i <= deg; ++i) p.c[i] = U(rng) * std::pow(10.0, 2 * U(rng));
+        if (trial % 3 == 0) p.c[0] += 3 * std::fabs(p.c[0]) + 0.5;  // often no root nearby
+        const double lo = 2 * U(rng), hi = lo + std::pow(10.0, -3 * std::fabs(U(rng))) * 2;
+        if (!one_sign_on(p, lo, hi)) continue;
+        ++said_yes;
+        const double ref = p(lo);
+        ASSERT_NE(ref, 0.0) << "trial " << trial;
+        // Dense evaluation, the ends and the points next to them: all of one strict sign.
+        for (int k = 0; k <= 400; ++k) {
+            const double x = k == 400 ? hi : lo + (hi - lo) * k / 400.0;
+            const double v = p(x);
+            ASSERT_TRUE((v > 0) == (ref > 0) && v != 0) << "trial " << trial << " x " << x;
+        }
+        for (double x : {std::nextafter(lo, hi), std::nextafter(hi, lo)}) ASSERT_TRUE((p(x) > 0) == (ref > 0) && p(x) != 0);
+        // And sign_change_roots agrees that there is nothing to find, as does no_sign_change.
+        EXPECT_TRUE(sign_change_roots(p, lo, hi).empty());
+        EXPECT_TRUE(no_sign_change(p, lo, hi));
+    }
+    EXPECT_GT(said_yes, 500);  // the test is useless if the bound never succeeds
+    // Obvious cases.
+    Poly bowl = from_roots(1, {});
+    bowl.deg = 2;
+    bowl.c[0] = 2;
+    bowl.c[2] = 1;  // 2 + x^2
+    EXPECT_TRUE(one_sign_on(bowl, -1, 1));
+    EXPECT_FALSE(one_sign_on(from_roots(1, {0.3}), 0, 1));
+}
+
+TEST(Poly, NoSignChangeMeansNoRoots) {
+    std::mt19937 rng(14);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int yes = 0, no = 0;
+    for (int trial = 0; trial < 5000; ++trial) {
+        const int deg = trial % 5;
+        Poly p;
+        p.deg = 4;  // with zero leading coefficients, as compose() gives for straight arcs
+        for (int i = 0; i <= deg; ++i) p.c[i] = U(rng);
+        const double lo = U(rng), hi = lo + std::fabs(U(rng));
+        if (no_sign_change(p, lo, hi)) {
+            ++yes;
+            EXPECT_TRUE(sign_change_roots(p, lo, hi).empty()) << "trial " << trial;
+        } else {
+            ++no;
+        }
+    }
+    EXPECT_GT(yes, 1000);
+    EXPECT_GT(no, 500);
+    // A line vanishing exactly at an end has a root there: not "no sign change".
+    Poly line;
+    line.deg = 1;
+    line.c[0] = -0.25;
+    line.c[1] = 1;
+    EXPECT_FALSE(no_sign_change(line, 0.25, 1));
+    EXPECT_EQ(sign_change_roots(line, 0.25, 1).size(), 1u);
+}
+
+TEST(Conic, ComposeIsTheQuadraticAlongTheArc) {
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<double> U(-1, 1);
+    for (int trial = 0; trial < 2000; ++trial) {
+        RationalCurve c;
+        c.n0 = {U(rng), U(rng)};
+        c.n1 = {U(rng), U(rng)};
+        const int kind = trial % 3;  // a line with w = 1, a parabola, a rational (conic) arc
+        if (kind >= 1) c.n2 = {U(rng), U(rng)};
+        if (kind == 2) { c.w0 = 1; c.w1 = 0.3 * U(rng); c.w2 = 0.5 + 0.4 * U(rng); }
+        Quadratic2 q{U(rng), U(rng), U(rng), U(rng), U(rng), U(rng)};
+        Poly F = c.compose(q), W = c.weight();
+        // The definition: q.a X^2 + 2 q.b X Y + q.c Y^2 + 2 q.d X W + 2 q.e Y W + q.f W^2 by Poly
+        // arithmetic; the unrolled form must give the same bits (it feeds every root search).
+        if (!(c.straight() && c.w0 == 1)) {
+            Poly X, Y;
+            X.deg = Y.deg = 2;
+            X.c[0] = c.n0.x; X.c[1] = c.n1.x; X.c[2] = c.n2.x;
+            Y.c[0] = c.n0.y; Y.c[1] = c.n1.y; Y.c[2] = c.n2.y;
+            Poly r = q.a * (X * X) + (2 * q.b) * (X * Y) + q.c * (Y * Y) + (2 * q.d) * (X * W) + (2 * q.e) * (Y * W) + q.f * (W * W);
+            ASSERT_EQ(F.deg, 4);
+            for (int i = 0; i <= 4; ++i) ASSERT_TRUE(same_bits(F.c[i], r.c[i])) << "trial " << trial << " c" << i;
+        }
+        // And numerically: q at the curve's point, times w^2.
+        for (double z : {-0.7, -0.1, 0.0, 0.4, 0.9}) {
+            const double w = W(z), direct = q(c(z)) * w * w;
+            EXPECT_NEAR(F(z), direct, 1e-12 * (1 + std::fabs(direct)) * 16) << "trial " << trial;
+        }
+    }
+}
