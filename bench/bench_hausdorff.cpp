@@ -154,3 +154,25 @@ int main(int argc, char** argv) {
     benchmark::Shutdown();
     return 0;
 }
+
+// Building the voxel grid of a pair (both meshes): the time VoxelGrid.BuildTwoLargeMeshes (tests/)
+// no longer asserts. hlens_bench --benchmark_filter=voxel_grid
+static void voxel_grid(benchmark::State& state, const char* file) {
+    const Pair* p = pair_for(file);
+    if (!p) {
+        state.SkipWithError((std::string("cannot load ") + kShared + "/" + file).c_str());
+        return;
+    }
+    size_t voxels = 0, assignments = 0;
+    for (auto _ : state) {
+        VoxelGrid grid(p->a, p->b);
+        voxels = grid.num_voxels();
+        assignments = grid.num_assignments(0) + grid.num_assignments(1);
+        benchmark::DoNotOptimize(grid);
+    }
+    state.counters["voxels"] = (double)voxels;
+    state.counters["assignments"] = (double)assignments;
+    state.counters["triangles"] = (double)(p->a.num_triangles() + p->b.num_triangles());
+}
+BENCHMARK_CAPTURE(voxel_grid, nefertiti, "nefertiti.obj")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(voxel_grid, spot, "spot.obj")->Unit(benchmark::kMillisecond)->UseRealTime();

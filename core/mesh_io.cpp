@@ -330,6 +330,8 @@ TriangleMesh read_obj(const std::string& path, const std::string& data, const Lo
 
 enum PlyType { I8, U8, I16, U16, I32, U32, F32, F64 };
 const int kPlySize[] = {1, 1, 2, 2, 4, 4, 4, 8};
+// The largest list length a count of each type can hold (a float count type is held to uint's).
+const double kPlyMaxCount[] = {127, 255, 32767, 65535, 2147483647.0, 4294967295.0, 4294967295.0, 4294967295.0};
 
 bool ply_type(sv n, int& t) {
     static const std::pair<sv, int> names[] = {
@@ -463,8 +465,8 @@ TriangleMesh read_ply(const std::string& path, const std::string& data, const Lo
                     if (i == iz) xyz[2] = v;
                     continue;
                 }
-                double n = value(pr.count_type);
-                if (!(n >= 0) || n != std::floor(n))
+                double n = value(pr.count_type);  // ASCII numbers are not bounded by their type
+                if (!(n >= 0) || n != std::floor(n) || n > kPlyMaxCount[pr.count_type])
                     fail(path, fmt("invalid list length in '%s' element %llu", E.name.c_str(), (unsigned long long)item));
                 if (!ascii && n > double(end - p) / kPlySize[pr.type])
                     fail(path, fmt("truncated: file ends in '%s' element %llu of %llu", E.name.c_str(),
@@ -764,11 +766,27 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
     return true;  // textures are irrelevant here: do not decode them
 }
 
-TriangleMesh read_gltf(const std::string& path, const std::string& data, bool binary, const LoadOptions& opt) {
+// File system callbacks for a glTF read from memory: there is no directory to resolve a uri in.
+// Every file "exists", so that tinygltf asks no_read for it and the message says why it is not read.
+bool every_file_exists(const std::string&, void*) { return true; }
+std::string no_expand(const std::string& p, void*) { return p; }
+bool no_read(std::vector<unsigned char>*, std::string* err, const std::string& p, void*) {
+    if (err) *err += "cannot read external file '" + p + "' when reading from memory";
+    return false;
+}
+bool no_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "cannot write files";
+    return false;
+}
+
+// external_files: whether buffers may be external files, found next to `path`.
+TriangleMesh read_gltf(const std::string& path, const std::string& data, bool binary, bool external_files,
+                       const LoadOptions& opt) {
     if (data.size() > UINT32_MAX) fail(path, "file too large for glTF");
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skip_image, nullptr);
+    if (!external_files) loader.SetFsCallbacks({every_file_exists, no_expand, no_read, no_write, nullptr});
     std::string err, warn, base = fs::path(path).parent_path().string();
     bool ok = false;
     try {
@@ -828,8 +846,26 @@ std::string read_file(const std::string& path) {
     const bool bad = std::ferror(f);
     std::fclose(f);
     if (bad) fail(path, "read error");
-    if (data.empty()) fail(path, "empty file");
     return data;
+}
+
+// The extension of `path` in lower case; fails unless it is one of the supported formats.
+std::string format_of(const std::string& path) {
+    const std::string ext = lower(fs::path(path).extension().string());
+    if (ext != ".obj" && ext != ".ply" && ext != ".stl" && ext != ".off" && ext != ".gltf" && ext != ".glb")
+        fail(path, "unknown file extension '" + ext + "' (supported: .obj .ply .stl .off .gltf .glb)");
+    return ext;
+}
+
+// data must be a std::string: the text readers rely on its terminating '\0' (see Tokens).
+TriangleMesh parse(const std::string& path, const std::string& ext, const std::string& data, bool external_files,
+                   const LoadOptions& opt) {
+    if (data.empty()) fail(path, "empty file");
+    if (ext == ".obj") return read_obj(path, data, opt);
+    if (ext == ".ply") return read_ply(path, data, opt);
+    if (ext == ".stl") return read_stl(path, data, opt);
+    if (ext == ".off") return read_off(path, data, opt);
+    return read_gltf(path, data, ext == ".glb", external_files, opt);
 }
 
 }  // namespace
@@ -840,13 +876,13 @@ TriangleMesh load_mesh(const std::string& path, const LoadOptions& opt) {
     if (!fs::exists(st)) fail(path, "file not found");
     if (fs::is_directory(st)) fail(path, "cannot open: is a directory");
     if (!fs::is_regular_file(st)) fail(path, "cannot open: not a regular file");
-    const std::string ext = lower(fs::path(path).extension().string());
-    TriangleMesh (*reader)(const std::string&, const std::string&, const LoadOptions&) =
-        ext == ".obj" ? read_obj : ext == ".ply" ? read_ply : ext == ".stl" ? read_stl : ext == ".off" ? read_off : nullptr;
-    if (!reader && ext != ".gltf" && ext != ".glb")
-        fail(path, "unknown file extension '" + ext + "' (supported: .obj .ply .stl .off .gltf .glb)");
-    const std::string data = read_file(path);
-    return reader ? reader(path, data, opt) : read_gltf(path, data, ext == ".glb", opt);
+    const std::string ext = format_of(path);
+    return parse(path, ext, read_file(path), true, opt);
+}
+
+TriangleMesh load_mesh_from_memory(const void* data, size_t size, const std::string& name, const LoadOptions& opt) {
+    const std::string ext = format_of(name);
+    return parse(name, ext, size ? std::string(static_cast<const char*>(data), size) : std::string(), false, opt);
 }
 
 TriangleMesh make_mesh(std::vector<Vec3> positions, std::vector<Tri> tris, const std::string& name) {

@@ -23,6 +23,12 @@ struct LoadOptions {
 // Vertices no triangle uses are kept in positions.
 TriangleMesh load_mesh(const std::string& path, const LoadOptions& opt = {});
 
+// Reads a mesh from the `size` bytes at `data` exactly as load_mesh reads a file with that content
+// named `name`: the extension of `name` picks the format (e.g. "scan.ply"), `name` starts every
+// MeshError message and becomes TriangleMesh::path. Nothing is read from disk: a glTF whose buffers
+// are external files (a uri that is not a data: URI) is a MeshError.
+TriangleMesh load_mesh_from_memory(const void* data, size_t size, const std::string& name, const LoadOptions& opt = {});
+
 // Builds a mesh from memory. Checks that there is at least one triangle, that every index is in
 // range and that every used vertex is finite; throws MeshError ("<name>: ...") otherwise.
 // No welding. name becomes TriangleMesh::path.

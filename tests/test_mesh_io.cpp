@@ -340,6 +340,30 @@ TEST_F(MeshIOTest, PlyErrors) {
                  "unknown PLY property type");
 }
 
+// Found by fuzz/fuzz_ply.cpp: an ASCII list length is a number like any other, 1e30 included, and was
+// converted to an integer unchecked (undefined behaviour). A length must fit its declared count type.
+TEST_F(MeshIOTest, PlyListLengthBeyondItsCountType) {
+    const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list ";
+    const std::string verts = "0 0 0\n1 0 0\n0 1 0\n";
+    auto ply = [&](const std::string& count_type, const std::string& face) {
+        return head + count_type + " int vertex_indices\nend_header\n" + verts + face;
+    };
+    expect_error(write("huge.ply", ply("uchar", "1e30 0 1 2\n")), "invalid list length in 'face' element 0");
+    expect_error(write("uchar.ply", ply("uchar", "256 0 1 2\n")), "invalid list length");
+    expect_error(write("float.ply", ply("float", "1e30 0 1 2\n")), "invalid list length");
+    expect_error(write("neg.ply", ply("int", "-3 0 1 2\n")), "invalid list length");
+    EXPECT_EQ(hlens::load_mesh(write("ok.ply", ply("uchar", "3 0 1 2\n"))).num_triangles(), 1u);
+    EXPECT_EQ(hlens::load_mesh(write("okf.ply", ply("float", "3 0 1 2\n"))).num_triangles(), 1u);
+    // Binary: a float count that no integer type could hold.
+    std::string bin = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                      "property float z\nelement face 1\nproperty list float int vertex_indices\nend_header\n";
+    for (float f : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) put(bin, f);
+    put(bin, 1e30f);
+    for (int32_t i : {0, 1, 2}) put(bin, i);
+    expect_error(write("binf.ply", bin), "invalid list length");
+}
+
 // ============================================================== STL
 
 std::string binary_stl(const std::string& header80, const std::vector<std::array<float, 9>>& tris) {
@@ -525,6 +549,63 @@ TEST_F(MeshIOTest, GltfErrors) {
     expect_error(write("cycle.glb", make_glb(cyc, gltf_buffer())), "cycle");
 }
 
+// ============================================================== from memory
+
+// EXPECT that load_mesh_from_memory(bytes, name) throws MeshError "<name>: ..." containing `word`.
+void expect_memory_error(const std::string& bytes, const std::string& name, const std::string& word) {
+    try {
+        hlens::load_mesh_from_memory(bytes.data(), bytes.size(), name);
+        ADD_FAILURE() << name << ": expected MeshError containing '" << word << "'";
+    } catch (const MeshError& e) {
+        std::string msg = e.what();
+        EXPECT_EQ(msg.rfind(name + ": ", 0), 0u) << msg;
+        EXPECT_NE(msg.find(word), std::string::npos) << "'" << word << "' not in: " << msg;
+        EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    }
+}
+
+void expect_same_mesh(const TriangleMesh& a, const TriangleMesh& b, const std::string& what) {
+    EXPECT_EQ(a.triangles, b.triangles) << what;
+    ASSERT_EQ(a.positions.size(), b.positions.size()) << what;
+    for (size_t i = 0; i < a.positions.size(); ++i)
+        EXPECT_EQ(std::memcmp(&a.positions[i], &b.positions[i], sizeof(Vec3)), 0) << what << " vertex " << i;
+}
+
+TEST_F(MeshIOTest, FromMemoryReadsLikeAFile) {
+    const std::vector<std::pair<std::string, std::string>> files = {
+        {"m.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf -1 -2 -3\n"},
+        {"m.OFF", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n4 0 1 2 3\n"},
+        {"m.ply", binary_ply(true)},
+        {"m.stl", binary_stl("solid x", kStlTris)},
+        {"m.glb", make_glb(gltf_json(""), gltf_buffer())},
+        {"m.gltf", gltf_json("data:application/octet-stream;base64," + base64(gltf_buffer()))},
+    };
+    for (const auto& [name, bytes] : files)
+        for (bool weld : {true, false}) {
+            const std::string path = write(name, bytes);
+            TriangleMesh f = hlens::load_mesh(path, {weld});
+            TriangleMesh m = hlens::load_mesh_from_memory(bytes.data(), bytes.size(), name, {weld});
+            EXPECT_EQ(m.path, name);
+            EXPECT_GT(m.num_triangles(), 0u) << name;
+            expect_same_mesh(f, m, name);
+        }
+}
+
+TEST_F(MeshIOTest, FromMemoryErrors) {
+    expect_memory_error("", "a.obj", "empty file");
+    expect_memory_error("v 0 0 0\n", "mesh.xyz", "unknown file extension '.xyz'");
+    expect_memory_error("v 0 0 0\n", "mesh", "unknown file extension");
+    expect_memory_error("v 0 0 0\nv 1 0 0\nf 1 2 3\n", "in memory.obj", "out of range");
+    expect_memory_error("plx\n", "x.ply", "not a PLY");
+    // Nothing is read from disk: an external buffer is an error even when the file is right there,
+    // next to the name given.
+    const std::string json = gltf_json("buf.bin");
+    write("buf.bin", gltf_buffer());
+    check_synthetic_gltf(write("ext.gltf", json));
+    expect_memory_error(json, (dir / "ext.gltf").string(), "buf.bin");
+    expect_memory_error(json, (dir / "ext.gltf").string(), "when reading from memory");
+}
+
 // ============================================================== save / make
 
 TEST_F(MeshIOTest, SaveObjRoundTripsExactly) {
@@ -707,6 +788,25 @@ TEST_F(MeshIOTest, FuzzTruncationAndCorruption) {
             for (int k = 0; k < 1 + int(rng() % 4); ++k) d[rng() % d.size()] = char(rng() % 256);
             load_bytes(name, d);
         }
+    }
+}
+
+// The seed corpus of the fuzzers (fuzz/corpus/<format>/, see scripts/fuzz.sh): valid meshes, so that
+// fuzzing starts deep inside every reader, and read from memory as from the file.
+TEST(MeshIOFuzzCorpus, EverySeedIsAValidMesh) {
+    const fs::path root = fs::path(HLENS_SOURCE_DIR) / "fuzz" / "corpus";
+    for (const char* format : {"obj", "ply", "stl", "off", "gltf"}) {
+        size_t seeds = 0;
+        for (const auto& entry : fs::directory_iterator(root / format)) {
+            const std::string path = entry.path().string(), bytes = read_bytes(path);
+            ++seeds;
+            TriangleMesh f, m;
+            ASSERT_NO_THROW(f = hlens::load_mesh(path)) << path;
+            EXPECT_GT(f.num_triangles(), 0u) << path;
+            m = hlens::load_mesh_from_memory(bytes.data(), bytes.size(), path);
+            expect_same_mesh(f, m, path);
+        }
+        EXPECT_GE(seeds, 3u) << format;
     }
 }
 

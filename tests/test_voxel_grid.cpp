@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <random>
 
@@ -455,19 +454,18 @@ TEST(VoxelGrid, RealMeshNearest) {
     check_nearest(g, 1, 200, 14);
 }
 
-TEST(VoxelGrid, BuildTwoLargeMeshesQuickly) {
+// The grid of two large meshes: bounded size, correct nearest queries. How long the build takes is
+// measured by the benchmark voxel_grid/nefertiti (bench/bench_hausdorff.cpp), not asserted here.
+TEST(VoxelGrid, BuildTwoLargeMeshes) {
     TriangleMesh a = load_shared("nefertiti.obj");
     ASSERT_GT(a.num_triangles(), 90000u);
     TriangleMesh b = a;
     std::mt19937 gen(15);
     double diag = a.bounds().diagonal();
     for (Vec3& p : b.positions) p += rnd(gen, -1e-3 * diag, 1e-3 * diag);
-    auto t0 = std::chrono::steady_clock::now();
     VoxelGrid g(a, b);
-    double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::printf("[ info ] grid for 2 x %zu triangles: %d x %d x %d voxels, %zu + %zu assignments, %.3f s\n",
-                a.num_triangles(), g.nx, g.ny, g.nz, g.num_assignments(0), g.num_assignments(1), sec);
+    std::printf("[ info ] grid for 2 x %zu triangles: %d x %d x %d voxels, %zu + %zu assignments\n",
+                a.num_triangles(), g.nx, g.ny, g.nz, g.num_assignments(0), g.num_assignments(1));
     EXPECT_LE(g.num_voxels(), 8 * 2 * a.num_triangles() + 64);
-    EXPECT_LT(sec, 5.0);
     check_nearest(g, 1, 30, 16);
 }

@@ -1,0 +1,7 @@
+// libFuzzer harness of the OFF reader (see fuzz_loader.h; corpus in fuzz/corpus/off/, run by scripts/fuzz.sh).
+#include "fuzz_loader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    hlens_fuzz::load(data, size, "fuzz.off");
+    return 0;
+}

@@ -1,0 +1,7 @@
+// libFuzzer harness of the STL reader (see fuzz_loader.h; corpus in fuzz/corpus/stl/, run by scripts/fuzz.sh).
+#include "fuzz_loader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    hlens_fuzz::load(data, size, "fuzz.stl");
+    return 0;
+}
