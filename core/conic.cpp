@@ -115,8 +115,15 @@ Vec2 CurveComponent::at(double t) const {
 double CurveComponent::param_of(Vec2 p) const {
     Vec2 w = p - c;
     switch (kind) {
-        case CurveKind::Line:
-        case CurveKind::Parabola: return dot(w, u) / norm2(u);
+        case CurveKind::Line: return dot(w, u) / norm2(u);
+        case CurveKind::Parabola: {
+            // At the vertex u is perpendicular to v: the foot along u. Anchored elsewhere (see
+            // decompose_conic), w.u = t |u|^2 + t^2 v.u: its root near w.u / |u|^2.
+            const double W = dot(w, u), uu = norm2(u), uv = dot(u, v);
+            if (std::fabs(uv) <= 1e-9 * std::sqrt(uu) * norm(v)) return W / uu;
+            const double disc = uu * uu + 4 * uv * W;
+            return disc > 0 ? 2 * W / (uu + std::sqrt(disc)) : W / uu;
+        }
         case CurveKind::Ellipse: return std::atan2(dot(w, v) / norm2(v), dot(w, u) / norm2(u));
         case CurveKind::Hyperbola: return std::asinh(dot(w, v) / norm2(v));
     }
@@ -250,12 +257,39 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     }
     // Parabolic: l2 ~ 0, so q = l1 X^2 + 2 b1 X + 2 b2 Y + f.
     if (std::fabs(b2) > eps_par) {
-        double X0 = -b1 / l1;
-        double Y0 = -(l1 * X0 * X0 + 2 * b1 * X0 + q.f) / (2 * b2);
+        // Y = -(l1 X^2 + 2 b1 X + f) / (2 b2), parametrised by X = Xa + t. Anchored at the vertex
+        // (Xa = -b1 / l1) unless that lies far outside the target (a nearly flat parabola, as the
+        // difference of two sources' edge quadratics often is): there c + t u + t^2 v would be a
+        // small point made of huge cancelling terms, so it is anchored in the target instead.
+        double Xa = -b1 / l1;
+        double Ya = -(l1 * Xa * Xa + 2 * b1 * Xa + q.f) / (2 * b2);
         CurveComponent cc;
         cc.kind = CurveKind::Parabola;
-        cc.c = X0 * e1 + Y0 * e2;
         cc.u = e1;
+        if (!(std::fabs(Xa) + std::fabs(Ya) <= 8)) {
+            // The curve's point at Y = Ym (the target's middle) nearest Xm: the root of
+            // l1 X^2 + 2 b1 X + (f + 2 b2 Ym) = 0 closest to Xm, taken without cancellation. Far
+            // from its vertex a parabola runs nearly along its axis, so X hardly changes along
+            // the target: t is rescaled so that |u| = 1.
+            const Vec2 m{0.5, 0.25};
+            const double Xm = dot(m, e1), Ym = dot(m, e2), C = q.f + 2 * b2 * Ym;
+            const double disc = b1 * b1 - l1 * C;
+            if (disc >= 0) {
+                const double h = -(b1 + std::copysign(std::sqrt(disc), b1));
+                const double r1 = h / l1, r2 = h != 0 ? C / h : r1;
+                Xa = std::fabs(r1 - Xm) <= std::fabs(r2 - Xm) ? r1 : r2;
+                Ya = Ym;
+                const Vec2 u = e1 + (-(l1 * Xa + b1) / b2) * e2;
+                const double k = 1 / norm(u);
+                cc.u = u * k;
+                cc.c = Xa * e1 + Ya * e2;
+                cc.v = (-l1 / (2 * b2) * k * k) * e2;
+                out.components.push_back(cc);
+                out.type = ConicType::Parabola;
+                return;
+            }
+        }
+        cc.c = Xa * e1 + Ya * e2;
         cc.v = (-l1 / (2 * b2)) * e2;
         out.components.push_back(cc);
         out.type = ConicType::Parabola;

@@ -630,7 +630,7 @@ void DomainMesh::merge_equal_neighbours(const Listener* L) {
             if (F <= 0 || G <= 0) continue;
             const Face &fa = faces_[F], &fb = faces_[G];
             bool equal = F == G || (fa.infinite && fb.infinite) ||
-                         (!fa.infinite && !fb.infinite && same_polynomial(fa.poly, fb.poly));
+                         (!fa.infinite && !fb.infinite && same_quadratic(fa.poly, fb.poly, delta_));
             if (!equal) continue;
             int keep = std::min(F, G), gone = std::max(F, G);
             std::vector<int>& hes = tmp_.merge_hes;
@@ -1012,6 +1012,7 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
 // ---------------------------------------------------------------- inserting a source
 
 void DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listener* L) {
+    delta_ = std::max(delta_, src.delta);
     std::vector<int>& snapshot = tmp_.snapshot;
     snapshot.clear();
     for (int f : live_face_ids()) snapshot.push_back(f);
@@ -1034,7 +1035,7 @@ void DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
             if (L && L->on_relabel) L->on_relabel(P, old, lab);
             return;
         }
-        if (same_polynomial(faces_[P].poly, reg.poly)) return;  // the existing domain keeps it
+        if (same_quadratic(faces_[P].poly, reg.poly, delta_)) return;  // the existing domain keeps it (a tie)
         Quadratic2 Q = faces_[P].poly - reg.poly;                // > 0 where the source is nearer
         std::vector<SplitPiece>& pieces = tmp_.pieces;
         split_face_into(P, Q, pieces);
@@ -1234,7 +1235,7 @@ std::string DomainMesh::validate(double area_tol) const {
                 return std::snprintf(buf, sizeof buf, "edge %zu: its curve does not vanish at vertex %d (%g)", e, half_[h].origin, val), buf;
         }
         int F = half_[2 * e].face, G = half_[2 * e + 1].face;
-        if (F > 0 && G > 0 && F != G && !faces_[F].infinite && !faces_[G].infinite && same_polynomial(faces_[F].poly, faces_[G].poly))
+        if (F > 0 && G > 0 && F != G && !faces_[F].infinite && !faces_[G].infinite && same_quadratic(faces_[F].poly, faces_[G].poly, delta_))
             return std::snprintf(buf, sizeof buf, "faces %d and %d are neighbours with the same polynomial", F, G), buf;
     }
     return "";

@@ -97,6 +97,8 @@ public:
     std::vector<Candidate> update_maxima();
     void update_maxima(std::vector<Candidate>& out);  // the same into `out` (its storage reused)
 
+    // The tie rule's allowance: quadratics within same_quadratic(.., .., delta()) are one domain.
+    double delta() const { return delta_; }
     // Invariants; returns an empty string when they hold, else a description of the first failure.
     std::string validate(double area_tol = 1e-9) const;
 
@@ -134,6 +136,7 @@ private:
     std::vector<HalfEdge> half_;
     std::vector<Face> faces_;
     Stats stats_;
+    double delta_ = 0;  // the largest rounding of the inserted sources' coordinates (the tie rule's)
 
     // face_box() is asked for many times per insertion (culling, region tests, split_face), mostly
     // of faces nothing has touched since. Every edit of a face's loops, of the half-edges, arcs or

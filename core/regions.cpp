@@ -132,6 +132,9 @@ struct Projector {
 SourceProjection project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t index) {
     SourceProjection out;
     out.source = index;
+    double reach = 0;
+    for (const Vec3& c : s) reach = std::max(reach, norm(c - F.origin) / F.scale);
+    out.delta = 64 * 0x1p-52 * (1 + reach);
     Projector P{F};
     const Vec3 &a = s[0], &b = s[1], &c = s[2];
     double longest2 = std::max({norm2(b - a), norm2(c - b), norm2(a - c)});
@@ -178,8 +181,10 @@ SourceProjection project_source(const TargetFrame& F, const std::array<Vec3, 3>&
 }
 
 double source_distance2(const TargetFrame& F, const std::array<Vec3, 3>& s, Vec2 p) {
-    Vec3 w = F.to_world(p);
-    return closest_point_on_triangle(w, s[0], s[1], s[2]).dist2 / (F.scale * F.scale);
+    // Relative to the frame's origin, so that the rounding is that of the distances between the
+    // target and the source, not of their coordinates' magnitude (meshes far from the origin).
+    const Vec3 w = (p.x * F.scale) * F.e1 + (p.y * F.scale) * F.e2;
+    return closest_point_on_triangle(w, s[0] - F.origin, s[1] - F.origin, s[2] - F.origin).dist2 / (F.scale * F.scale);
 }
 
 std::vector<Vec2> clip_convex(std::vector<Vec2> poly, const std::vector<HalfPlane>& planes) {

@@ -50,6 +50,10 @@ struct SourceProjection {
     uint32_t source = 0;
     std::vector<SourceRegion> regions;
     bool degenerate = false;
+    // How far the corners' frame coordinates may be off by rounding (frame units): 64 ulps of
+    // their largest distance from the frame's origin, T' itself having unit size. Quadratics that
+    // differ by less than this can make are one polynomial (same_quadratic).
+    double delta = 0;
 };
 SourceProjection project_source(const TargetFrame& frame, const std::array<Vec3, 3>& source, uint32_t index);
 

@@ -2,6 +2,8 @@
 // search bounded by the shrinking search radius, each inserted into the domain mesh.
 #include "target_solver.h"
 
+#include "label_check.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -83,7 +85,11 @@ TargetSolver::~TargetSolver() = default;
 TargetSolver& TargetSolver::on_event(std::function<void(const Event&)> cb) { callbacks_.push_back(std::move(cb)); return *this; }
 TargetSolver& TargetSolver::record_events(bool on) { recording_ = on; return *this; }
 TargetSolver& TargetSolver::stop_below(double b) { stop_below_ = b; return *this; }
-TargetSolver& TargetSolver::validate_each_insertion(bool on) { validate_each_ = on; return *this; }
+TargetSolver& TargetSolver::validate_each_insertion(bool on, bool thorough) {
+    validate_each_ = on;
+    validate_thorough_ = thorough;
+    return *this;
+}
 
 std::array<Vec3, 3> TargetSolver::source_corners(uint32_t s) const { return grid_.mesh(1 - side_).corners(s); }
 
@@ -263,7 +269,7 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
     };
     mesh_->insert(proj, cull, watching() ? &L : nullptr);
     if (validate_each_) {
-        std::string msg = validate();
+        std::string msg = validate(validate_thorough_);
         if (!msg.empty()) throw std::logic_error("target " + std::to_string(target_) + ", after source " + std::to_string(s) + ": " + msg);
     }
     update_maximum();
@@ -447,21 +453,75 @@ void TargetSolver::run() {
     while (step()) {}
 }
 
-std::string TargetSolver::validate() const {
+// Points of face f to check it at: some interior point and the points of a 6 x 6 grid over its
+// box that fall inside it, away from its boundary (where a label may rightly be either side's).
+static std::vector<Vec2> probe_points(const DomainMesh& m, int f) {
+    std::vector<Vec2> out;
+    Vec2 p;
+    if (m.interior_point(f, p)) out.push_back(p);
+    const Box2 b = m.face_box(f);
+    const double size = std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+    for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; ++i) {
+            const Vec2 q{b.lo.x + (i + 0.5) / 6 * (b.hi.x - b.lo.x), b.lo.y + (j + 0.5) / 6 * (b.hi.y - b.lo.y)};
+            if (m.point_in_face(f, q) && !m.near_boundary(f, q, 1e-3 * size)) out.push_back(q);
+        }
+    return out;
+}
+
+// Whether p lies in region r of the projected source (to within `tol`, in frame units).
+static bool in_region(const SourceRegion& r, Vec2 p, double tol) {
+    for (const HalfPlane& h : r.planes) {
+        if (h.kind == HalfPlane::All) continue;
+        if (h.kind == HalfPlane::None) return false;
+        if (dot(h.n, p) - h.offset < -tol * norm(h.n)) return false;
+    }
+    return true;
+}
+
+std::string TargetSolver::validate(bool thorough) const {
     if (!mesh_) return "";
     std::string msg = mesh_->validate();
     if (!msg.empty()) return msg;
+    std::vector<SourceProjection> proj;
+    double delta = 0;
+    for (uint32_t s : inserted_) {
+        proj.push_back(project_source(frame_, source_corners(s), s));
+        delta = std::max(delta, proj.back().delta);
+    }
+    const double noise = rounding_sq() / (frame_.scale * frame_.scale);  // frame units squared
     const auto& F = mesh_->faces();
+    char buf[320];
     for (size_t f = 1; f < F.size(); ++f) {
         if (!F[f].alive || F[f].infinite) continue;
-        Vec2 p;
-        if (!mesh_->interior_point((int)f, p)) continue;  // a sliver too thin to probe
-        double poly = F[f].poly(p), direct = direct_d2(p);
-        if (std::fabs(poly - direct) > 1e-7 * (1 + direct)) {
-            char buf[200];
-            std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): polynomial %.12g but d^2 = %.12g at (%.9g, %.9g)", f,
-                          F[f].label.source, region_name(F[f].label.region), poly, direct, p.x, p.y);
-            return buf;
+        const DomainLabel L = F[f].label;
+        // 1. The label names a feature of an inserted source whose quadratic is the domain's.
+        const SourceProjection* own = nullptr;
+        for (const SourceProjection& p : proj)
+            if ((int)p.source == L.source) own = &p;
+        const Quadratic2* q = own ? region_quadratic(*own, L.region) : nullptr;
+        if (thorough && (!q || !same_quadratic(*q, F[f].poly, delta)))
+            return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): the label's quadratic is not the domain's", f,
+                                 L.source, region_name(L.region)), buf;
+        // The features tied with it (the same quadratic): the domain may extend over their regions.
+        std::vector<const SourceRegion*> tied;
+        for (const SourceProjection& p : proj)
+            for (const SourceRegion& r : p.regions)
+                if (same_quadratic(r.poly, F[f].poly, delta)) tied.push_back(&r);
+        std::vector<Vec2> probes = probe_points(*mesh_, (int)f);
+        if (!thorough && probes.size() > 1) probes.resize(1);
+        for (Vec2 p : probes) {
+            // 2. The polynomial is d^2 there, computed directly.
+            const double poly = F[f].poly(p), direct = direct_d2(p);
+            if (std::fabs(poly - direct) > 1e-7 * direct + 16 * noise)
+                return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): polynomial %.12g but d^2 = %.12g at (%.9g, %.9g)", f,
+                                     L.source, region_name(L.region), poly, direct, p.x, p.y), buf;
+            // 3. The point lies in the region of the label's feature or of one tied with it.
+            bool inside = false;
+            for (const SourceRegion* r : tied) inside = inside || in_region(*r, p, 1e-9);
+            if (thorough && !inside)
+                return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
+                                     L.source, region_name(L.region), p.x, p.y), buf;
         }
     }
     return "";

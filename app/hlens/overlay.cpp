@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "gl.h"
+#include "label_check.h"
 #include "shader.h"
 #include "stepper.h"
 
@@ -17,35 +18,6 @@ namespace {
 
 constexpr int kResolution = 256;   // pixels along the longer side of T''s bounding box
 constexpr int kBorder = 2;         // samples this close (in overlay pixels) to a change are not compared
-
-struct Feature {
-    double d2 = HUGE_VAL;
-    Region region = Region::abc;
-};
-
-// Squared distance from p to triangle abc and which of its seven regions p's closest point is in
-// (Ericson, Real-Time Collision Detection 5.1.5, with the edge regions named ab, bc, ca).
-Feature closest_feature(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const Vec3 ab = b - a, ac = c - a, ap = p - a;
-    auto d2 = [&](const Vec3& q) { return norm2(p - q); };
-    const double d1 = dot(ab, ap), d2_ = dot(ac, ap);
-    if (d1 <= 0 && d2_ <= 0) return {d2(a), Region::a};
-    const Vec3 bp = p - b;
-    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-    if (d3 >= 0 && d4 <= d3) return {d2(b), Region::b};
-    const double vc = d1 * d4 - d3 * d2_;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return {d2(a + ab * (d1 / (d1 - d3))), Region::ab};
-    const Vec3 cp = p - c;
-    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-    if (d6 >= 0 && d5 <= d6) return {d2(c), Region::c};
-    const double vb = d5 * d2_ - d1 * d6;
-    if (vb <= 0 && d2_ >= 0 && d6 <= 0) return {d2(a + ac * (d2_ / (d2_ - d6))), Region::ca};
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-        return {d2(b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))), Region::bc};
-    const double den = 1.0 / (va + vb + vc);
-    return {d2(a + ab * (vb * den) + ac * (vc * den)), Region::abc};
-}
 
 GLuint g_tex = 0;
 
@@ -156,94 +128,26 @@ void update_overlay(Stepper& st) {
     // compared with the nearest feature over all sources, any other with the nearest feature
     // over the sources before it (where the previous state is still right).
     const int cur = st.inserting() >= 0 && !ids.empty() ? (int)ids.size() - 1 : -1;
+    // The comparison itself is the core's (label_check.h: the tie rule of the domain mesh).
+    std::vector<std::array<Vec3, 3>> world;
     for (uint32_t s : ids) {
-        std::array<Vec3, 3> c = ts.source_corners(s), f;
-        for (int k = 0; k < 3; ++k) {
-            Vec3 w = (c[k] - fr.origin) / fr.scale;
-            f[k] = Vec3(dot(w, fr.e1), dot(w, fr.e2), dot(w, fr.normal));
-        }
-        src.push_back(f);
+        world.push_back(ts.source_corners(s));
+        src.push_back(source_in_frame(fr, world.back()));  // for the GPU picture
     }
-
+    LabelCheckOptions opt;
+    opt.resolution = kResolution;
+    opt.border = kBorder;
+    opt.current = cur;
+    const LabelCheck L = check_labels(*mesh, fr, world, ids, opt);
+    st.overlay_samples = L.samples, st.overlay_disagree = L.disagree, st.overlay_ignored = L.ignored, st.overlay_ties = L.ties;
+    const int W = L.width, H = L.height, n = W * H;
+    st.overlay_w = W, st.overlay_h = H;
+    st.overlay_lo = L.lo;
+    st.overlay_hi = L.hi;
+    const std::vector<int>&feat = L.nearest, &dom = L.domain;
     Box2 box;
     for (const Vec2& c : fr.corners) box.add(c);
     const double bw = std::max(1e-300, box.hi.x - box.lo.x), bh = std::max(1e-300, box.hi.y - box.lo.y);
-    const double px = std::max(bw, bh) / kResolution;
-    const int W = std::max(1, (int)std::ceil(bw / px)), H = std::max(1, (int)std::ceil(bh / px));
-    st.overlay_w = W, st.overlay_h = H;
-    st.overlay_lo = box.lo;
-    st.overlay_hi = Vec2(box.lo.x + W * px, box.lo.y + H * px);
-
-    // Per pixel (row 0 at the top): the nearest feature (first minimum over the sources, as a
-    // label) and the domain mesh's label there; -1 outside T' or without a domain.
-    const int n = W * H;
-    std::vector<int> feat(n, -1), dom(n, -1);
-    std::vector<Vec2> where(n);
-    std::vector<double> best_d2(n, HUGE_VAL);
-    auto code = [](int source_slot, Region r) { return source_slot * 8 + (int)r; };
-    auto slot = [&](int source) {
-        for (size_t i = 0; i < ids.size(); ++i)
-            if ((int)ids[i] == source) return (int)i;
-        return -1;
-    };
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-            const int i = y * W + x;
-            const Vec2 p(box.lo.x + (x + 0.5) * px, box.lo.y + (H - y - 0.5) * px);
-            where[i] = p;
-            const int f = mesh->face_at(p);
-            if (f < 0) continue;
-            const auto& F = mesh->faces()[f];
-            dom[i] = F.infinite || F.label.source < 0 ? -2 : code(slot(F.label.source), F.label.region);
-            if (src.empty()) continue;
-            const Vec3 q(p.x, p.y, 0);
-            Feature best;
-            int bs = -1;
-            for (size_t s = 0; s < src.size(); ++s) {
-                if ((int)s == cur) continue;
-                Feature ft = closest_feature(q, src[s][0], src[s][1], src[s][2]);
-                if (ft.d2 < best.d2) best = ft, bs = (int)s;
-            }
-            if (cur >= 0 && dom[i] >= 0 && dom[i] / 8 == cur) {
-                Feature ft = closest_feature(q, src[cur][0], src[cur][1], src[cur][2]);
-                if (ft.d2 < best.d2) best = ft, bs = cur;
-            }
-            if (bs < 0) continue;
-            feat[i] = code(bs, best.region);
-            best_d2[i] = best.d2;
-        }
-
-    // Compare away from changes: the domain's label must name a feature that is nearest at the
-    // sample, i.e. the labelled source's region test gives the labelled region and that source's
-    // distance equals the minimum (to 1e-9 relative: shared edges and corners of neighbouring
-    // sources are ties, and either source is a correct label there).
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-            const int i = y * W + x;
-            if (dom[i] < 0 || feat[i] < 0) continue;
-            bool near_change = false;
-            for (int dy = -kBorder; dy <= kBorder && !near_change; ++dy)
-                for (int dx = -kBorder; dx <= kBorder && !near_change; ++dx) {
-                    const int xx = x + dx, yy = y + dy;
-                    if (xx < 0 || yy < 0 || xx >= W || yy >= H) { near_change = true; break; }
-                    const int j = yy * W + xx;
-                    near_change = dom[j] != dom[i] || feat[j] != feat[i];
-                }
-            if (near_change) {
-                ++st.overlay_ignored;
-                continue;
-            }
-            ++st.overlay_samples;
-            if (dom[i] == feat[i]) continue;
-            const int s = dom[i] / 8;
-            bool ok = false;
-            if (s >= 0 && s < (int)src.size()) {
-                Feature ft = closest_feature(Vec3(where[i].x, where[i].y, 0), src[s][0], src[s][1], src[s][2]);
-                ok = (int)ft.region == dom[i] % 8 && ft.d2 <= best_d2[i] * (1 + 1e-9) + 1e-300;
-            }
-            if (!ok) ++st.overlay_disagree;
-            else ++st.overlay_ties;
-        }
 
     // The picture: the nearest feature's label in the domain view's colours (so where the two
     // agree, the overlay looks like the domain fills), transparent outside T'.

@@ -1,0 +1,164 @@
+// The domain mesh's labels against brute force; see label_check.h (issue 8, Straub 2007 §3.1).
+#include "label_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace hlens {
+
+NearestFeature nearest_feature(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
+    auto d2 = [&](const Vec3& q) { return norm2(p - q); };
+    const double d1 = dot(ab, ap), d2_ = dot(ac, ap);
+    if (d1 <= 0 && d2_ <= 0) return {d2(a), Region::a};
+    const Vec3 bp = p - b;
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return {d2(b), Region::b};
+    const double vc = d1 * d4 - d3 * d2_;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return {d2(a + ab * (d1 / (d1 - d3))), Region::ab};
+    const Vec3 cp = p - c;
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return {d2(c), Region::c};
+    const double vb = d5 * d2_ - d1 * d6;
+    if (vb <= 0 && d2_ >= 0 && d6 <= 0) return {d2(a + ac * (d2_ / (d2_ - d6))), Region::ca};
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return {d2(b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))), Region::bc};
+    const double den = 1.0 / (va + vb + vc);
+    return {d2(a + ab * (vb * den) + ac * (vc * den)), Region::abc};
+}
+
+const Quadratic2* region_quadratic(const SourceProjection& p, Region r) {
+    for (const SourceRegion& reg : p.regions)
+        if (reg.kind == r) return &reg.poly;
+    return nullptr;
+}
+
+bool features_tie(const SourceProjection& p, Region r, const SourceProjection& q, Region s, double delta) {
+    const Quadratic2 *a = region_quadratic(p, r), *b = region_quadratic(q, s);
+    return a && b && same_quadratic(*a, *b, delta);
+}
+
+std::array<Vec3, 3> source_in_frame(const TargetFrame& fr, const std::array<Vec3, 3>& c) {
+    std::array<Vec3, 3> f;
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 w = (c[k] - fr.origin) / fr.scale;
+        f[k] = Vec3(dot(w, fr.e1), dot(w, fr.e2), dot(w, fr.normal));
+    }
+    return f;
+}
+
+Vec2 LabelCheck::sample_point(int x, int y) const {
+    const double px = (hi.x - lo.x) / std::max(1, width);
+    return {lo.x + (x + 0.5) * px, lo.y + (height - y - 0.5) * px};
+}
+
+namespace {
+
+// True if no sample within `border` of (x, y) differs in either map (a sample at the edge of the
+// box is near a change: T''s boundary).
+bool away_from_changes(const LabelCheck& L, int x, int y, int border) {
+    const int i = y * L.width + x;
+    for (int dy = -border; dy <= border; ++dy)
+        for (int dx = -border; dx <= border; ++dx) {
+            const int xx = x + dx, yy = y + dy;
+            if (xx < 0 || yy < 0 || xx >= L.width || yy >= L.height) return false;
+            const int j = yy * L.width + xx;
+            if (L.domain[j] != L.domain[i] || L.nearest[j] != L.nearest[i]) return false;
+        }
+    return true;
+}
+
+}  // namespace
+
+LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& fr, const std::vector<std::array<Vec3, 3>>& sources,
+                        const std::vector<uint32_t>& ids, const LabelCheckOptions& opt) {
+    LabelCheck L;
+    std::vector<std::array<Vec3, 3>> src;
+    std::vector<SourceProjection> proj;
+    double delta = 0;
+    for (size_t s = 0; s < sources.size(); ++s) {
+        src.push_back(source_in_frame(fr, sources[s]));  // the sample plane is z = 0
+        proj.push_back(project_source(fr, sources[s], ids[s]));
+        delta = std::max(delta, proj.back().delta);
+    }
+    auto slot_of = [&](int source) {
+        for (size_t i = 0; i < ids.size(); ++i)
+            if ((int)ids[i] == source) return (int)i;
+        return -1;
+    };
+
+    Box2 box;
+    for (const Vec2& c : fr.corners) box.add(c);
+    const double bw = std::max(1e-300, box.hi.x - box.lo.x), bh = std::max(1e-300, box.hi.y - box.lo.y);
+    const double px = std::max(bw, bh) / std::max(1, opt.resolution);
+    L.width = std::max(1, (int)std::ceil(bw / px));
+    L.height = std::max(1, (int)std::ceil(bh / px));
+    L.lo = box.lo;
+    L.hi = Vec2(box.lo.x + L.width * px, box.lo.y + L.height * px);
+    const int n = L.width * L.height;
+    L.nearest.assign(n, -1);
+    L.domain.assign(n, -1);
+    std::vector<double> best_d2(n, HUGE_VAL);
+
+    // 1. Both maps: the nearest feature (the first minimum over the sources) and the domain's label.
+    for (int y = 0; y < L.height; ++y)
+        for (int x = 0; x < L.width; ++x) {
+            const int i = y * L.width + x;
+            const Vec2 p = L.sample_point(x, y);
+            const int f = mesh.face_at(p);
+            if (f < 0) continue;
+            const DomainMesh::Face& F = mesh.faces()[f];
+            L.domain[i] = F.infinite || F.label.source < 0 ? -2 : slot_of(F.label.source) * 8 + (int)F.label.region;
+            const Vec3 q(p.x, p.y, 0);
+            NearestFeature best;
+            int bs = -1;
+            for (int s = 0; s < (int)src.size(); ++s) {
+                // The source being inserted counts only where its domains already are.
+                if (s == opt.current && !(L.domain[i] >= 0 && L.domain[i] / 8 == s)) continue;
+                const NearestFeature ft = nearest_feature(q, src[s][0], src[s][1], src[s][2]);
+                if (ft.d2 < best.d2) best = ft, bs = s;
+            }
+            if (bs < 0) continue;
+            L.nearest[i] = bs * 8 + (int)best.region;
+            best_d2[i] = best.d2;
+        }
+
+    // 2. Compare away from changes. A different label is a tie where the two features' quadratics
+    // are one polynomial, or where the labelled source's own region test names the labelled region
+    // at a distance equal to the nearest (to 1e-9 relative).
+    for (int y = 0; y < L.height; ++y)
+        for (int x = 0; x < L.width; ++x) {
+            const int i = y * L.width + x;
+            if (L.domain[i] < 0 || L.nearest[i] < 0) continue;
+            if (!away_from_changes(L, x, y, opt.border)) { ++L.ignored; continue; }
+            ++L.samples;
+            if (L.domain[i] == L.nearest[i]) continue;
+            const int s = L.domain[i] / 8, t = L.nearest[i] / 8;
+            const Region r = (Region)(L.domain[i] % 8), rn = (Region)(L.nearest[i] % 8);
+            bool tie = features_tie(proj[s], r, proj[t], rn, delta);
+            if (!tie) {
+                // A degenerate source's features carry other names in its projection (a segment's
+                // ends and its one edge) than in the region test: compare the labelled quadratic's
+                // value with the nearest distance instead.
+                const Vec2 p = L.sample_point(x, y);
+                const NearestFeature ft = nearest_feature(Vec3(p.x, p.y, 0), src[s][0], src[s][1], src[s][2]);
+                tie = ft.region == r && ft.d2 <= best_d2[i] * (1 + 1e-9) + 1e-300;
+                const Quadratic2* q = proj[s].degenerate ? region_quadratic(proj[s], r) : nullptr;
+                tie = tie || (q && std::fabs((*q)(p) - best_d2[i]) <= 1e-9 * best_d2[i] + 64 * delta);
+            }
+            if (tie) { ++L.ties; continue; }
+            ++L.disagree;
+            if (L.first.empty()) {
+                const Vec2 p = L.sample_point(x, y);
+                char buf[256];
+                std::snprintf(buf, sizeof buf, "at (%.9g, %.9g): domain labelled source %u %s, nearest is source %u %s (d^2 %.12g)",
+                              p.x, p.y, ids[s], region_name(r), ids[t], region_name(rn), best_d2[i]);
+                L.first = buf;
+            }
+        }
+    return L;
+}
+
+}  // namespace hlens
