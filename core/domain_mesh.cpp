@@ -459,6 +459,7 @@ int DomainMesh::split_edge(int e, double z) {
     half_[half_[t].prev].next = gt;
     half_[gt].next = t;
     half_[t].prev = gt;
+    touch_edge_faces(e);  // a curved arc's pieces bulge no farther, but their boxes round differently
     return v;
 }
 
@@ -816,6 +817,7 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
             polish_on_two(g, eq, p);
             int v = split_edge(cur, z);
             vertices_[v].p = p;
+            touch_edge_faces(cur);  // the polished vertex moved off curve(z) by rounding
             mark_zero(v);
             cur = (int)edges_.size() - 1;
         }
