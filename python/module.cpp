@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <mutex>
 #include <thread>
 
 #include "batch.h"
@@ -59,14 +60,18 @@ Result distance(py::handle VA, py::handle FA, py::handle VB, py::handle FB, bool
     run_blocking(
         [&](Job& job) {
             opt.cancel = &job.cancel;
-            // hausdorff() reports each direction from 0 to 1, a->b first: a fraction falling back
-            // well below the last one means b->a began (as the CLI's progress bar reads it).
-            auto seen = std::make_shared<std::pair<int, double>>(0, 0.0);
-            opt.progress = [&job, seen, one_sided](double f) {
-                if (f < seen->second - 0.5) seen->first = 1;
-                seen->second = f;
-                const double overall = one_sided ? f : (seen->first + f) / 2;
-                job.fraction = std::max(job.fraction.load(), overall);
+            // hausdorff() reports each direction from 0 to 1, a->b first, from several worker
+            // threads: a fraction falling back well below the last one means b->a began (as the
+            // CLI's progress bar reads it).
+            std::mutex mutex;
+            int direction = 0;
+            double last = 0;
+            opt.progress = [&](double f) {
+                std::lock_guard<std::mutex> lock(mutex);
+                if (f < last - 0.5) direction = 1;
+                last = f;
+                const double overall = one_sided ? f : (direction + f) / 2;
+                if (overall > job.fraction) job.fraction = overall;
             };
             r = hausdorff(A, B, opt, one_sided);
         },
@@ -89,7 +94,12 @@ public:
         bool got = false;
         while (!got) {
             if (runner_->done()) throw py::stop_iteration();
-            run_blocking([&](Job&) { got = runner_->next(item, std::chrono::milliseconds(100)); }, py::none());
+            try {
+                run_blocking([&](Job&) { got = runner_->next(item, std::chrono::milliseconds(100)); }, py::none());
+            } catch (py::error_already_set&) {
+                runner_->cancel();  // Ctrl-C: the pairs still running stop; later ones are not started
+                throw;
+            }
         }
         if (!item.ok) {
             BatchFailure f;
