@@ -2,12 +2,14 @@
 //
 //   hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld]
 //   hlens-cli trace A B --target I [--json] [--no-weld]
+//   hlens-cli batch REFERENCE FILE... [--json] [--tolerance T] [--jobs N] [--units NAME] ...
 //   hlens-cli --help | help
 //
 // `distance` prints h(A,B), h(B,A) and the Hausdorff distance (core/hausdorff.h); `trace` runs one
 // target triangle of A with core/target_solver.h and prints every event as it happens, one per line.
+// `batch` compares one reference against many files (app/batch.h), one result line per pair.
 // Exit codes: 0 success, 2 bad usage or bad input (one line "hlens-cli: <message>" on stderr),
-// 1 anything unexpected.
+// 3 --verify disagreement, 4 a batch pair beyond --tolerance, 1 anything unexpected.
 #include <unistd.h>
 
 #include <algorithm>
@@ -25,13 +27,13 @@
 #include <utility>
 #include <vector>
 
-#include "conic.h"
-#include "domain_mesh.h"
+#include "batch.h"
 #include "bounds.h"
 #include "hausdorff.h"
+#include "json_value.h"
 #include "mesh.h"
 #include "mesh_io.h"
-#include "regions.h"
+#include "report.h"
 #include "target_solver.h"
 #include "voxel_grid.h"
 
@@ -42,7 +44,10 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld] [--verify]\n"
+    "                     [--units NAME]\n"
     "  hlens-cli trace A B --target I [--json] [--no-weld]\n"
+    "  hlens-cli batch REFERENCE FILE... [--json] [--tolerance T] [--jobs N] [--one-sided] [--mode paper|fast]\n"
+    "                     [--threads N] [--no-weld] [--units NAME]\n"
     "  hlens-cli --help | help\n"
     "\n"
     "distance   exact Hausdorff distance between the triangle meshes A and B (Straub 2007):\n"
@@ -56,138 +61,29 @@ const char* kUsage =
     "  --verify      also bracket each one-sided distance independently, by Lipschitz subdivision of\n"
     "                the measured mesh (to 1e-4 of the bounding-box diagonal), and check that the\n"
     "                exact value lies in the bracket (exit code 3 if it does not)\n"
+    "  --units NAME  a unit label, passed through to the output (\"units\"); \"relative\" values are\n"
+    "                divided by the diagonal of the bounding box of both meshes together\n"
     "\n"
     "trace      run target triangle I of A against B and print every event of the solver as it\n"
     "           happens (one line each), then a final summary line\n"
     "  --target I    index of the target triangle of A (0-based), required\n"
     "  --json        one JSON object per line\n"
     "\n"
+    "batch      compare REFERENCE (as A) with each FILE (as B), printing one line per pair as it\n"
+    "           finishes (a file that fails gets a line with its error; the others go on), then a\n"
+    "           summary line; the options of distance apply to every pair, and\n"
+    "  --tolerance T exit code 4 if the Hausdorff distance (h(A,B) with --one-sided) of a pair exceeds T\n"
+    "  --jobs N      compare N pairs at the same time (default 1); --threads is then per pair\n"
+    "                (default: all cores divided by N)\n"
+    "\n"
     "formats: .obj .ply .stl .off .gltf .glb\n"
-    "exit codes: 0 success, 2 bad usage or bad input, 3 --verify found a disagreement, 1 unexpected error\n";
+    "exit codes: 0 success, 2 bad usage or bad input (batch: a file failed), 3 --verify found a\n"
+    "disagreement, 4 a batch pair exceeds --tolerance (2 wins over 4), 1 unexpected error\n";
 
 // Bad usage or bad input: exit code 2.
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
-
-// ---------------------------------------------------------------- a tiny JSON value
-
-struct Value {
-    enum Kind { Null, Bool, Int, Num, Str, Arr, Obj } kind = Null;
-    bool b = false;
-    long long i = 0;
-    double d = 0;
-    std::string s;
-    std::vector<Value> items;                            // Arr
-    std::vector<std::pair<std::string, Value>> fields;   // Obj, in insertion order
-
-    Value() = default;
-    static Value boolean(bool v) { Value r; r.kind = Bool; r.b = v; return r; }
-    static Value integer(long long v) { Value r; r.kind = Int; r.i = v; return r; }
-    static Value number(double v) { Value r; r.kind = Num; r.d = v; return r; }   // non-finite: null
-    static Value string(std::string v) { Value r; r.kind = Str; r.s = std::move(v); return r; }
-    static Value array() { Value r; r.kind = Arr; return r; }
-    static Value object() { Value r; r.kind = Obj; return r; }
-
-    Value& add(const std::string& key, Value v) { fields.emplace_back(key, std::move(v)); return *this; }
-    Value& push(Value v) { items.push_back(std::move(v)); return *this; }
-};
-
-Value vec2(Vec2 p) { return Value::array().push(Value::number(p.x)).push(Value::number(p.y)); }
-Value vec3(const Vec3& p) {
-    return Value::array().push(Value::number(p.x)).push(Value::number(p.y)).push(Value::number(p.z));
-}
-
-std::string format_double(double v, int digits) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    return buf;
-}
-
-void json_string(std::string& out, const std::string& s) {
-    out += '"';
-    for (unsigned char c : s) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\b': out += "\\b"; break;
-            case '\f': out += "\\f"; break;
-            case '\n': out += "\\n"; break;
-            case '\r': out += "\\r"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (c < 0x20 || c == 0x7f) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                    out += buf;
-                } else {
-                    out += char(c);  // UTF-8 passes through unchanged
-                }
-        }
-    }
-    out += '"';
-}
-
-// Doubles with 17 significant digits so they read back bit-exactly; inf and NaN become null.
-void to_json(std::string& out, const Value& v) {
-    switch (v.kind) {
-        case Value::Null: out += "null"; break;
-        case Value::Bool: out += v.b ? "true" : "false"; break;
-        case Value::Int: out += std::to_string(v.i); break;
-        case Value::Num: out += std::isfinite(v.d) ? format_double(v.d, 17) : "null"; break;
-        case Value::Str: json_string(out, v.s); break;
-        case Value::Arr:
-            out += '[';
-            for (size_t k = 0; k < v.items.size(); ++k) {
-                if (k) out += ", ";
-                to_json(out, v.items[k]);
-            }
-            out += ']';
-            break;
-        case Value::Obj:
-            out += '{';
-            for (size_t k = 0; k < v.fields.size(); ++k) {
-                if (k) out += ", ";
-                json_string(out, v.fields[k].first);
-                out += ": ";
-                to_json(out, v.fields[k].second);
-            }
-            out += '}';
-            break;
-    }
-}
-
-// The same value for people: numbers with 10 digits, number lists as (x, y), objects as k=v.
-void to_text(std::string& out, const Value& v) {
-    switch (v.kind) {
-        case Value::Null: out += "-"; break;
-        case Value::Bool: out += v.b ? "yes" : "no"; break;
-        case Value::Int: out += std::to_string(v.i); break;
-        case Value::Num: out += std::isfinite(v.d) ? format_double(v.d, 10) : (v.d > 0 ? "inf" : "nan"); break;
-        case Value::Str: out += v.s; break;
-        case Value::Arr: {
-            bool numeric = !v.items.empty() && std::all_of(v.items.begin(), v.items.end(), [](const Value& x) {
-                return x.kind == Value::Num || x.kind == Value::Int;
-            });
-            out += numeric ? '(' : '[';
-            for (size_t k = 0; k < v.items.size(); ++k) {
-                if (k) out += numeric ? ", " : " ";
-                to_text(out, v.items[k]);
-            }
-            out += numeric ? ')' : ']';
-            break;
-        }
-        case Value::Obj:
-            out += '{';
-            for (size_t k = 0; k < v.fields.size(); ++k) {
-                if (k) out += ' ';
-                out += v.fields[k].first + '=';
-                to_text(out, v.fields[k].second);
-            }
-            out += '}';
-            break;
-    }
-}
 
 void print_line(const std::string& s) {
     std::fwrite(s.data(), 1, s.size(), stdout);
@@ -202,6 +98,9 @@ struct Args {
     bool json = false, one_sided = false, weld = true, verify = false;
     Mode mode = Mode::Fast;
     int threads = 0;          // 0: all cores
+    int jobs = 1;             // batch: pairs at a time
+    double tolerance = -1;    // batch: < 0 when not given
+    std::string units;
     long long target = -1;
     bool has_target = false;
     bool help = false;
@@ -216,6 +115,14 @@ long long parse_integer(const std::string& option, const std::string& text) {
     return v;
 }
 
+double parse_number(const std::string& option, const std::string& text) {
+    errno = 0;
+    char* end = nullptr;
+    double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || errno == ERANGE) throw UsageError(option + " needs a number, got '" + text + "'");
+    return v;
+}
+
 Args parse_args(int argc, char** argv) {
     Args a;
     std::vector<std::string> words(argv + 1, argv + argc);
@@ -224,9 +131,10 @@ Args parse_args(int argc, char** argv) {
         if (w == "--help" || w == "-h") { a.help = true; return a; }
     a.command = words[0];
     if (a.command == "help") { a.help = true; return a; }
-    if (a.command != "distance" && a.command != "trace")
+    if (a.command != "distance" && a.command != "trace" && a.command != "batch")
         throw UsageError("unknown command '" + a.command + "' (see hlens-cli --help)");
-    const bool distance = a.command == "distance";
+    const bool batch = a.command == "batch";
+    const bool distance = a.command == "distance" || batch;  // batch takes distance's options
 
     for (size_t k = 1; k < words.size(); ++k) {
         std::string w = words[k], value;
@@ -256,6 +164,16 @@ Args parse_args(int argc, char** argv) {
             long long n = parse_integer("--threads", take_value());
             if (n < 1 || n > 4096) throw UsageError("--threads must be between 1 and 4096, got " + std::to_string(n));
             a.threads = (int)n;
+        } else if (distance && w == "--units") {
+            a.units = take_value();
+        } else if (batch && w == "--tolerance") {
+            a.tolerance = parse_number("--tolerance", take_value());
+            if (!(a.tolerance >= 0) || !std::isfinite(a.tolerance))
+                throw UsageError("--tolerance must be a finite number >= 0");
+        } else if (batch && w == "--jobs") {
+            long long n = parse_integer("--jobs", take_value());
+            if (n < 1 || n > 4096) throw UsageError("--jobs must be between 1 and 4096, got " + std::to_string(n));
+            a.jobs = (int)n;
         } else if (!distance && w == "--target") {
             a.target = parse_integer("--target", take_value());
             a.has_target = true;
@@ -264,6 +182,12 @@ Args parse_args(int argc, char** argv) {
         } else {
             a.files.push_back(words[k]);
         }
+    }
+    if (batch) {
+        if (a.files.size() < 2)
+            throw UsageError("batch needs a reference and at least one mesh file (see hlens-cli --help)");
+        if (a.verify) throw UsageError("--verify is not available for batch");
+        return a;
     }
     if (a.files.size() != 2)
         throw UsageError(a.command + " needs two mesh files, got " + std::to_string(a.files.size()) +
@@ -314,26 +238,6 @@ private:
 
 // ---------------------------------------------------------------- distance
 
-Value mesh_json(const TriangleMesh& m) {
-    return Value::object()
-        .add("path", Value::string(m.path))
-        .add("vertices", Value::integer((long long)m.num_used_vertices()))
-        .add("triangles", Value::integer((long long)m.num_triangles()));
-}
-
-Value one_sided_json(const OneSidedResult& r) {
-    return Value::object()
-        .add("distance", Value::number(r.distance))
-        .add("lower", Value::number(r.lower))
-        .add("upper", Value::number(r.upper))
-        .add("target", Value::integer(r.target))
-        .add("from_point", vec3(r.from_point))
-        .add("to_point", vec3(r.to_point))
-        .add("exact_targets", Value::integer((long long)r.exact_targets))
-        .add("exact_solves", Value::integer((long long)r.exact_solves))
-        .add("seconds", Value::number(r.seconds));
-}
-
 std::string g(double v, int digits = 15) { return format_double(v, digits); }
 std::string point_text(const Vec3& p) { return "(" + g(p.x, 10) + ", " + g(p.y, 10) + ", " + g(p.z, 10) + ")"; }
 
@@ -342,12 +246,28 @@ void print_mesh_summary(const char* name, const TriangleMesh& m) {
                 m.num_used_vertices(), m.num_triangles());
 }
 
-void print_one_sided(const char* title, const char* from, const char* to, const OneSidedResult& r, size_t targets) {
-    std::printf("%s = %s\n", title, g(r.distance).c_str());
+// "0.1494 (2.4% of the diagonal)": the relative value as report.h computes it.
+std::string relative_text(double distance, double diagonal) {
+    return diagonal > 0 ? " (" + g(100 * distance / diagonal, 4) + "% of the diagonal)" : "";
+}
+
+void print_one_sided(const char* title, const char* from, const char* to, const OneSidedResult& r, size_t targets,
+                     double diagonal) {
+    std::printf("%s = %s%s\n", title, g(r.distance).c_str(), relative_text(r.distance, diagonal).c_str());
     std::printf("   certified interval [%s, %s]\n", g(r.lower).c_str(), g(r.upper).c_str());
     std::printf("   witness: triangle %u of %s, point %s\n", r.target, from, point_text(r.from_point).c_str());
     std::printf("            nearest point of %s %s\n", to, point_text(r.to_point).c_str());
     std::printf("   exact targets: %zu of %zu (%zu exact solves), %.3f s\n", r.exact_targets, targets, r.exact_solves, r.seconds);
+}
+
+DistanceReportOptions report_options(const Args& args, int threads) {
+    DistanceReportOptions o;
+    o.one_sided = args.one_sided;
+    o.mode = args.mode;
+    o.threads = threads;
+    o.units = args.units;
+    o.tolerance = args.tolerance;
+    return o;
 }
 
 int run_distance(const Args& args) {
@@ -360,6 +280,7 @@ int run_distance(const Args& args) {
     opt.mode = args.mode;
     opt.threads = args.threads;
     const int threads = args.threads > 0 ? args.threads : (int)std::max(1u, std::thread::hardware_concurrency());
+    const double diagonal = report_diagonal(A, B);
     ProgressBar bar;
     if (isatty(2)) opt.progress = [&bar](double f) { bar.update(f); };
     HausdorffResult r;
@@ -385,135 +306,34 @@ int run_distance(const Args& args) {
         }
     }
     const bool verified = std::all_of(checks.begin(), checks.end(), [](const Check& c) { return c.ok; });
-    auto with_check = [&](Value v, size_t i) {
-        if (i < checks.size())
-            v.add("verify", Value::object()
-                                .add("lower", Value::number(checks[i].bound.lower))
-                                .add("upper", Value::number(checks[i].bound.upper))
-                                .add("ok", Value::boolean(checks[i].ok)));
-        return v;
-    };
 
     if (args.json) {
-        Value v = Value::object();
-        v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("a_to_b", with_check(one_sided_json(r.a_to_b), 0));
-        if (!args.one_sided) v.add("b_to_a", with_check(one_sided_json(r.b_to_a), 1)).add("hausdorff", Value::number(r.hausdorff));
-        v.add("seconds", Value::number(r.seconds))
-            .add("mode", Value::string(mode_name(args.mode)))
-            .add("threads", Value::integer(threads));
-        std::string out;
-        to_json(out, v);
-        print_line(out);
+        Value v = distance_json(A, B, r, report_options(args, threads));
+        for (size_t i = 0; i < checks.size(); ++i)
+            find_field(v, i == 0 ? "a_to_b" : "b_to_a")
+                ->add("verify", Value::object()
+                                    .add("lower", Value::number(checks[i].bound.lower))
+                                    .add("upper", Value::number(checks[i].bound.upper))
+                                    .add("ok", Value::boolean(checks[i].ok)));
+        print_line(to_json(v));
         return verified ? 0 : 3;
     }
     print_mesh_summary("A", A);
     print_mesh_summary("B", B);
     std::printf("\n");
-    print_one_sided("h(A,B)", "A", "B", r.a_to_b, A.num_triangles());
+    print_one_sided("h(A,B)", "A", "B", r.a_to_b, A.num_triangles(), diagonal);
     if (!args.one_sided) {
         std::printf("\n");
-        print_one_sided("h(B,A)", "B", "A", r.b_to_a, B.num_triangles());
-        std::printf("\nHausdorff distance = %s\n", g(r.hausdorff).c_str());
+        print_one_sided("h(B,A)", "B", "A", r.b_to_a, B.num_triangles(), diagonal);
+        std::printf("\nHausdorff distance = %s%s\n", g(r.hausdorff).c_str(), relative_text(r.hausdorff, diagonal).c_str());
     }
+    std::printf("\nbounding-box diagonal (both meshes) %s%s%s\n", g(diagonal).c_str(), args.units.empty() ? "" : " ",
+                args.units.c_str());
     std::printf("\nmode %s, %d thread%s, %.3f s\n", mode_name(args.mode), threads, threads == 1 ? "" : "s", r.seconds);
     for (size_t i = 0; i < checks.size(); ++i)
         std::printf("verify %s: Lipschitz bracket [%s, %s] %s\n", i == 0 ? "h(A,B)" : "h(B,A)", g(checks[i].bound.lower).c_str(),
                     g(checks[i].bound.upper).c_str(), checks[i].ok ? "holds the exact value" : "DOES NOT hold the exact value");
     return verified ? 0 : 3;
-}
-
-// ---------------------------------------------------------------- trace
-
-Value label_json(const DomainLabel& l) {
-    return Value::object()
-        .add("source", Value::integer(l.source))
-        .add("region", l.source < 0 ? Value() : Value::string(region_name(l.region)));
-}
-
-Value curve_json(const Quadratic2& q) {
-    return Value::object()
-        .add("a", Value::number(q.a)).add("b", Value::number(q.b)).add("c", Value::number(q.c))
-        .add("d", Value::number(q.d)).add("e", Value::number(q.e)).add("f", Value::number(q.f))
-        .add("type", Value::string(conic_type_name(decompose_conic(q).type)));
-}
-
-// One event with the fields meaningful for its kind. Every event has event, step, insertion (sources
-// inserted so far) and radius (the search radius at that moment, null while infinite).
-Value event_json(const Event& e, const TargetFrame& frame, long long target) {
-    Value v = Value::object();
-    v.add("event", Value::string(event_name(e.kind)))
-        .add("step", Value::integer(e.step))
-        .add("insertion", Value::integer(e.insertion))
-        .add("radius", Value::number(e.radius));
-    auto point = [&] { v.add("point", vec2(e.point)).add("world", vec3(e.world)); };
-    switch (e.kind) {
-        case EventKind::TargetBegun: {
-            Value corners = Value::array();
-            for (Vec2 c : frame.corners) corners.push(vec2(c));
-            v.add("target", Value::integer(target)).add("corners", corners)
-                .add("degenerate", Value::boolean(frame.degenerate)).add("world", vec3(e.world));
-            break;
-        }
-        case EventKind::VoxelVisited:
-        case EventKind::VoxelCulled:
-            v.add("voxel", Value::integer(e.voxel)).add("distance", Value::number(e.distance));
-            break;
-        case EventKind::SourceChosen:
-        case EventKind::SourceCulled:
-            v.add("source", Value::integer(e.source)).add("voxel", Value::integer(e.voxel))
-                .add("distance", Value::number(e.distance));
-            break;
-        case EventKind::RegionsProjected: {
-            Value regions = Value::array();
-            for (const RegionPolygon& r : e.regions) {
-                Value poly = Value::array();
-                for (Vec2 p : r.polygon) poly.push(vec2(p));
-                regions.push(Value::object().add("region", Value::string(region_name(r.kind))).add("polygon", poly));
-            }
-            v.add("source", Value::integer(e.source)).add("regions", regions);
-            break;
-        }
-        case EventKind::DomainSplit: {
-            Value faces = Value::array();
-            for (int f : e.faces) faces.push(Value::integer(f));
-            v.add("source", Value::integer(e.source)).add("face", Value::integer(e.face)).add("faces", faces)
-                .add("curve", curve_json(e.curve));
-            break;
-        }
-        case EventKind::DomainCreated:
-            v.add("source", Value::integer(e.source)).add("face", Value::integer(e.face))
-                .add("label", label_json(e.label)).add("old_label", label_json(e.old_label));
-            break;
-        case EventKind::DomainMerged:
-            v.add("source", Value::integer(e.source)).add("face", Value::integer(e.face))
-                .add("other", Value::integer(e.other));
-            break;
-        case EventKind::ArcMaximum:
-            v.add("edge", Value::integer(e.other));
-            point();
-            v.add("value", Value::number(e.value));
-            break;
-        case EventKind::MaximumRaised:
-        case EventKind::SearchRadiusShrunk:
-        case EventKind::TargetFinished:
-            point();
-            v.add("value", Value::number(e.value));
-            break;
-    }
-    return v;
-}
-
-// Readable form: "  step  event  key=value ..." (the step and event name lead the line).
-std::string event_text(const Value& v) {
-    char head[96];
-    std::snprintf(head, sizeof head, "%6lld  %-22s", v.fields[1].second.i, v.fields[0].second.s.c_str());
-    std::string out = head;
-    for (size_t k = 2; k < v.fields.size(); ++k) {
-        out += ' ';
-        out += v.fields[k].first + '=';
-        to_text(out, v.fields[k].second);
-    }
-    return out;
 }
 
 int run_trace(const Args& args) {
@@ -533,9 +353,7 @@ int run_trace(const Args& args) {
     ts.on_event([&](const Event& e) {
         Value v = event_json(e, ts.frame(), args.target);
         if (args.json) {
-            std::string out;
-            to_json(out, v);
-            print_line(out);
+            print_line(to_json(v));
         } else {
             print_line(event_text(v));
         }
@@ -544,32 +362,114 @@ int run_trace(const Args& args) {
     ts.run();
 
     const DomainMesh* dm = ts.domain_mesh();  // null for a degenerate target
-    const int domains = dm ? dm->num_live_faces() : 0, arcs = dm ? dm->num_live_edges() : 0,
-              vertices = dm ? dm->num_live_vertices() : 0;
-    Value fin = Value::object();
-    fin.add("event", Value::string("final"))
-        .add("step", Value::integer(steps))
-        .add("target", Value::integer(target))
-        .add("max_sq", Value::number(ts.max_sq()))
-        .add("max", Value::number(std::sqrt(ts.max_sq())))
-        .add("max_point", vec3(ts.max_point()))
-        .add("domains", Value::integer(domains))
-        .add("arcs", Value::integer(arcs))
-        .add("vertices", Value::integer(vertices))
-        .add("insertions", Value::integer(ts.insertions()))
-        .add("degenerate", Value::boolean(dm == nullptr));
+    const Value fin = trace_final_json(ts, steps);
     if (args.json) {
-        std::string out;
-        to_json(out, fin);
-        print_line(out);
+        print_line(to_json(fin));
     } else {
+        auto count = [&](const char* key) { return (int)find_field(fin, key)->i; };
         std::printf("\ntarget %u of %s against %s: %ld events, %d sources inserted%s\n", target, A.path.c_str(),
                     B.path.c_str(), steps, ts.insertions(), dm ? "" : " (degenerate target)");
         std::printf("   max distance %s (squared %s) at %s\n", g(std::sqrt(ts.max_sq())).c_str(),
                     g(ts.max_sq()).c_str(), point_text(ts.max_point()).c_str());
-        std::printf("   domain mesh: %d domains, %d arcs, %d vertices\n", domains, arcs, vertices);
+        std::printf("   domain mesh: %d domains, %d arcs, %d vertices\n", count("domains"), count("arcs"), count("vertices"));
     }
     return 0;
+}
+
+// ---------------------------------------------------------------- batch
+
+// What the summary line of a batch says.
+struct BatchTally {
+    size_t compared = 0, failed = 0, exceeding = 0;
+    bool unexpected = false;
+    double largest = -1;      // the largest reported distance, and its file
+    std::string largest_path;
+
+    void add(const BatchItem& item, const Args& args) {
+        if (!item.ok) {
+            ++failed;
+            unexpected |= item.unexpected;
+            return;
+        }
+        ++compared;
+        const double d = reported_distance(item.result, args.one_sided);
+        if (args.tolerance >= 0 && d > args.tolerance) ++exceeding;
+        if (d > largest) { largest = d; largest_path = item.path; }
+    }
+    // Failures first: a file that could not be compared may hide a pair beyond the tolerance.
+    int exit_code() const { return unexpected ? 1 : failed ? 2 : exceeding ? 4 : 0; }
+};
+
+void print_batch_item(const Args& args, const BatchItem& item, int threads) {
+    if (!item.ok) {
+        if (args.json)
+            print_line(to_json(Value::object()
+                                   .add("index", Value::integer((long long)item.index))
+                                   .add("path", Value::string(item.path))
+                                   .add("error", Value::string(item.error))));
+        else
+            std::printf("[%zu] %s: error: %s\n", item.index, item.path.c_str(), item.error.c_str());
+        return;
+    }
+    Value v = distance_json(*item.reference, item.mesh, item.result, report_options(args, threads));
+    if (args.json) {
+        v.fields.insert(v.fields.begin(), {"index", Value::integer((long long)item.index)});
+        print_line(to_json(v));
+        return;
+    }
+    const double d = reported_distance(item.result, args.one_sided);
+    std::printf("[%zu] %s: %s = %s%s%s\n", item.index, item.path.c_str(), args.one_sided ? "h(A,B)" : "Hausdorff",
+                g(d).c_str(), relative_text(d, find_field(v, "diagonal")->d).c_str(),
+                args.tolerance >= 0 && d > args.tolerance ? "  EXCEEDS the tolerance" : "");
+}
+
+void print_batch_summary(const Args& args, const BatchTally& t, size_t files, double seconds) {
+    if (args.json) {
+        Value s = Value::object();
+        s.add("reference", Value::string(args.files[0]))
+            .add("files", Value::integer((long long)files))
+            .add("compared", Value::integer((long long)t.compared))
+            .add("failed", Value::integer((long long)t.failed));
+        if (args.tolerance >= 0)
+            s.add("tolerance", Value::number(args.tolerance)).add("exceeding", Value::integer((long long)t.exceeding));
+        s.add("largest", t.compared ? Value::number(t.largest) : Value())
+            .add("largest_path", t.compared ? Value::string(t.largest_path) : Value())
+            .add("seconds", Value::number(seconds));
+        print_line(to_json(Value::object().add("summary", s)));
+        return;
+    }
+    std::printf("batch: %zu files against %s: %zu compared, %zu failed", files, args.files[0].c_str(), t.compared, t.failed);
+    if (args.tolerance >= 0) std::printf(", %zu beyond the tolerance %s", t.exceeding, g(args.tolerance).c_str());
+    if (t.compared) std::printf("; largest %s (%s)", g(t.largest).c_str(), t.largest_path.c_str());
+    std::printf(", %.3f s\n", seconds);
+}
+
+// The reference is read once (a bad reference stops everything: exit 2); each pair's line is
+// printed as soon as it finishes.
+int run_batch(const Args& args) {
+    const auto t0 = std::chrono::steady_clock::now();
+    LoadOptions lo;
+    lo.weld = args.weld;
+    const TriangleMesh reference = load_mesh(args.files[0], lo);
+    BatchOptions bo;
+    bo.mode = args.mode;
+    bo.threads = args.threads;
+    bo.jobs = args.jobs;
+    bo.one_sided = args.one_sided;
+    bo.load = lo;
+    const std::vector<std::string> files(args.files.begin() + 1, args.files.end());
+    BatchRunner runner(reference, files, bo);
+    BatchTally tally;
+    BatchItem item;
+    while (!runner.done()) {
+        if (!runner.next(item, std::chrono::milliseconds(500))) continue;
+        print_batch_item(args, item, runner.threads_per_pair());
+        std::fflush(stdout);
+        tally.add(item, args);
+    }
+    print_batch_summary(args, tally, files.size(),
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return tally.exit_code();
 }
 
 // One line on stderr, whatever the message holds.
@@ -589,7 +489,9 @@ int main(int argc, char** argv) {
             std::fputs(kUsage, stdout);
             return 0;
         }
-        int code = args.command == "distance" ? run_distance(args) : run_trace(args);
+        int code = args.command == "distance" ? run_distance(args)
+                   : args.command == "batch"  ? run_batch(args)
+                                              : run_trace(args);
         if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
             report("cannot write the output");
             return 1;

@@ -10,6 +10,7 @@ PACKAGES=(
   libglfw3-dev libimgui-dev libglm-dev libstb-dev
   libgtest-dev googletest libbenchmark-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
+  python3-dev pybind11-dev python3-numpy python3-pytest
 )
 
 missing=()

@@ -414,6 +414,7 @@ TEST_F(Cli, DistanceJsonTranslatedTriangle) {
         std::string d = sub(j, dir);
         double dist = num(d, "distance"), lo = num(d, "lower"), hi = num(d, "upper");
         EXPECT_NEAR(dist, 1.0, 1e-12);
+        EXPECT_NEAR(num(d, "relative"), dist / diag, 1e-15);  // the union's diagonal, not A's
         EXPECT_LE(lo, dist);
         EXPECT_LE(dist, hi);
         EXPECT_LE(hi - lo, 1e-9 * diag);
@@ -430,6 +431,9 @@ TEST_F(Cli, DistanceJsonTranslatedTriangle) {
         EXPECT_GE(num(d, "seconds"), 0);
     }
     EXPECT_NEAR(num(j, "hausdorff"), 1.0, 1e-12);
+    EXPECT_NEAR(num(j, "diagonal"), diag, 1e-15);
+    EXPECT_NEAR(num(j, "relative"), num(j, "hausdorff") / diag, 1e-15);
+    EXPECT_FALSE(has_key(j, "units"));
     EXPECT_GE(num(j, "seconds"), 0);
     EXPECT_EQ(str(j, "mode"), "fast");
     EXPECT_GE(num(j, "threads"), 1);

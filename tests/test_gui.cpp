@@ -265,6 +265,7 @@ TEST(Gui, DemoScreenshotShowsTheMeshesAndTheColourMap) {
     EXPECT_EQ(std::count(o.out.begin(), o.out.end(), '\n'), 1) << o.out;
     EXPECT_EQ(raw_value(o.out, "direction"), "\"ab\"");
     EXPECT_EQ(raw_value(o.out, "target"), "null");
+    EXPECT_EQ(raw_value(o.out, "units"), "null");
     std::vector<int> vp = int_list(o.out, "viewport");
     ASSERT_EQ(vp.size(), 4u) << o.out;
     const int vx = vp[0], vw = vp[2], vh = vp[3];
@@ -1427,3 +1428,18 @@ TEST(GuiExactMap, BadModeIsAUsageError) {
 }
 
 #endif  // HLENS_GUI
+
+// --units NAME: passed through to the state and drawn after the colour bar's top value (the label
+// is the drawn text: the range's top with 4 digits, then the unit).
+TEST(Gui, UnitsLabelTheColourBar) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "units.png";
+    Outcome o = run_gui({"--units", "mm"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(raw_value(o.out, "units"), "\"mm\"");
+    const size_t em = o.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos) << o.out;
+    char want[64];
+    std::snprintf(want, sizeof want, "\"%.4g mm\"", num(o.out, "hi", em));
+    EXPECT_EQ(raw_value(o.out, "hi_label", em), want);
+}

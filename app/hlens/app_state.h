@@ -86,6 +86,8 @@ struct AppState {
     double distances_at = -1;     // seconds from start-up (or Recompute) until the distances showed
     // Where the colour bar was drawn (window coordinates: x, y, w, h), for the headless state.
     float colour_bar_rect[4] = {0, 0, 0, 0};
+    std::string units;                  // --units: appended to the colour bar's top value
+    std::string colour_bar_hi_label;    // that label as drawn, for the headless state
     ViewRect target_window;       // the target panel over the 3D view (window coordinates)
     bool show_witness[2] = {true, true};
     bool show_colormap = true;

@@ -10,7 +10,7 @@ namespace hlens::gui {
 const char* usage_text() {
     return "usage: hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]\n"
            "             [--step N|end] [--event-log] [--graph] [--overlay] [--case NAME [--epsilon E]] [--export-case DIR]\n"
-           "             [--exact-colormap on|off|wait]\n"
+           "             [--exact-colormap on|off|wait] [--units NAME]\n"
            "\n"
            "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
            "(assets/demo_a.obj, assets/demo_b.obj).\n"
@@ -44,6 +44,7 @@ const char* usage_text() {
            "                      is done (window pixels from the top-left; a frame is 1/60 s)\n"
            "  --layout-file PATH  keep the window layout in PATH (interactive runs use\n"
            "                      ~/.config/hlens/imgui.ini; headless runs none unless given)\n"
+           "  --units NAME        the unit of the meshes' coordinates, shown with the colour bar's values\n"
            "  --dpi-scale S       act as if the window moved to a screen of content scale S\n"
            "                      (fonts and sizes follow, as when it really happens)\n"
            "\n"
@@ -161,6 +162,8 @@ Options parse_args(const std::vector<std::string>& args) {
             else if (v == "on") o.exact_colormap = 1;
             else if (v == "wait") o.exact_colormap = 2;
             else throw UsageError("--exact-colormap expects on, off or wait, got '" + v + "'");
+        } else if (a == "--units") {
+            o.units = value();
         } else if (a == "--layout-file") {
             o.layout_file = value();
         } else if (a == "--dpi-scale") {

@@ -2,7 +2,7 @@
 //                         [--step N|end] [--event-log] [--case NAME [--epsilon E]] [--export-case DIR]
 //                         [--click X,Y] [--double-click X,Y] [--drag X0,Y0,X1,Y1] [--right-drag X0,Y0,X1,Y1]
 //                         [--wheel X,Y,STEPS] [--hover X,Y] [--wait FRAMES] [--key home|f12|left|right|space]
-//                         [--layout-file PATH] [--dpi-scale S] [--exact-colormap on|off|wait]
+//                         [--layout-file PATH] [--dpi-scale S] [--exact-colormap on|off|wait] [--units NAME]
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -41,6 +41,7 @@ struct Options {
     bool graph = false;          // --graph: with --step, open the graph of d^2
     std::string layout_file;     // --layout-file PATH: keep the window layout there (also headless)
     float dpi_scale = 0;         // --dpi-scale S: act as if the window's content scale became S
+    std::string units;           // --units NAME: the distances' unit, shown on the colour bar
     // --exact-colormap: 1 on (fill in the exact maxima in the background), 0 off (never: skipped
     // triangles stay "not yet exact"), 2 wait (on; --screenshot waits until it is complete).
     // -1: not given (on; wait with --screenshot).

@@ -42,6 +42,7 @@
 #include "colormap.h"
 #include "compute.h"
 #include "gl.h"
+#include "json_value.h"
 #include "panels.h"
 #include "picking.h"
 #include "scene.h"
@@ -293,6 +294,7 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
     j += ", \"a_to_b\": " + (s.computed ? json_number(s.result.a_to_b.distance) : "null");
     j += ", \"b_to_a\": " + (s.computed ? json_number(s.result.b_to_a.distance) : "null");
     j += ", \"hausdorff\": " + (s.computed ? json_number(s.result.hausdorff) : "null");
+    j += ", \"units\": " + (s.units.empty() ? std::string("null") : to_json(Value::string(s.units)));
     // Seconds from start-up until the distances showed (null: not yet).
     j += ", \"distances_at\": " + (s.distances_at >= 0 ? json_number(s.distances_at) : "null");
     {   // The exact colour map of the measured mesh, its range and where the colour bar is.
@@ -309,7 +311,8 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
              ", \"bar\": [" + std::to_string((int)std::lround(s.colour_bar_rect[0] * fx)) + ", " +
              std::to_string((int)std::lround(s.colour_bar_rect[1] * fx)) + ", " +
              std::to_string((int)std::lround(s.colour_bar_rect[2] * fx)) + ", " +
-             std::to_string((int)std::lround(s.colour_bar_rect[3] * fx)) + "]";
+             std::to_string((int)std::lround(s.colour_bar_rect[3] * fx)) + "]" +
+             ", \"hi_label\": " + to_json(Value::string(s.colour_bar_hi_label));
         if (!probes.empty()) j += ", \"probes\": " + probes;
         j += "}";
     }
@@ -525,6 +528,7 @@ int main(int argc, char** argv) {
     AppState s;
     s.headless = !opt.screenshot.empty();
     s.demo = opt.demo;
+    s.units = opt.units;
     s.scripted_input = !opt.input.empty();
     for (int side = 0; side < 2; ++side) {
         s.demo_path[side] = std::string(HLENS_ASSET_DIR) + (side == 0 ? "/demo_a.obj" : "/demo_b.obj");

@@ -177,8 +177,9 @@ void colour_bar(AppState& s, const ColourRange& r) {
     ImGui::TextUnformatted(lo);
     ImGui::SetCursorPos(ImVec2(x0 + 0.5f * (w - ImGui::CalcTextSize(mid).x), y));
     ImGui::TextUnformatted(mid);
-    ImGui::SetCursorPos(ImVec2(x0 + w - ImGui::CalcTextSize(hi).x, y));
-    ImGui::TextUnformatted(hi);
+    s.colour_bar_hi_label = s.units.empty() ? std::string(hi) : std::string(hi) + " " + s.units;
+    ImGui::SetCursorPos(ImVec2(x0 + w - ImGui::CalcTextSize(s.colour_bar_hi_label.c_str()).x, y));
+    ImGui::TextUnformatted(s.colour_bar_hi_label.c_str());
 }
 
 // The exact colour map's state for direction d: the legend of the grey triangles, the fill-in's

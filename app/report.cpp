@@ -1,0 +1,175 @@
+#include "report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "conic.h"
+#include "domain_mesh.h"
+#include "regions.h"
+
+namespace hlens {
+
+double report_diagonal(const TriangleMesh& A, const TriangleMesh& B) {
+    Box3 box = A.bounds();
+    box.add(B.bounds());
+    return box.diagonal();
+}
+
+double reported_distance(const HausdorffResult& r, bool one_sided) {
+    return one_sided ? r.a_to_b.distance : r.hausdorff;
+}
+
+// distance / diagonal; null (NaN) when the meshes are one point.
+static Value relative(double distance, double diagonal) {
+    return Value::number(diagonal > 0 ? distance / diagonal : NAN);
+}
+
+Value mesh_json(const TriangleMesh& m) {
+    return Value::object()
+        .add("path", Value::string(m.path))
+        .add("vertices", Value::integer((long long)m.num_used_vertices()))
+        .add("triangles", Value::integer((long long)m.num_triangles()));
+}
+
+
+Value one_sided_json(const OneSidedResult& r, double diagonal) {
+    return Value::object()
+        .add("distance", Value::number(r.distance))
+        .add("relative", relative(r.distance, diagonal))
+        .add("lower", Value::number(r.lower))
+        .add("upper", Value::number(r.upper))
+        .add("target", Value::integer(r.target))
+        .add("from_point", vec3(r.from_point))
+        .add("to_point", vec3(r.to_point))
+        .add("exact_targets", Value::integer((long long)r.exact_targets))
+        .add("exact_solves", Value::integer((long long)r.exact_solves))
+        .add("seconds", Value::number(r.seconds));
+}
+
+Value distance_json(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
+                    const DistanceReportOptions& opt) {
+    const double diag = report_diagonal(A, B);
+    Value v = Value::object();
+    v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("a_to_b", one_sided_json(r.a_to_b, diag));
+    if (!opt.one_sided)
+        v.add("b_to_a", one_sided_json(r.b_to_a, diag))
+            .add("hausdorff", Value::number(r.hausdorff))
+            .add("relative", relative(r.hausdorff, diag));
+    v.add("seconds", Value::number(r.seconds))
+        .add("mode", Value::string(mode_name(opt.mode)))
+        .add("threads", Value::integer(opt.threads))
+        .add("diagonal", Value::number(diag));
+    if (!opt.units.empty()) v.add("units", Value::string(opt.units));
+    if (opt.tolerance >= 0)
+        v.add("tolerance", Value::number(opt.tolerance))
+            .add("exceeds", Value::boolean(reported_distance(r, opt.one_sided) > opt.tolerance));
+    return v;
+}
+
+Value label_json(const DomainLabel& l) {
+    return Value::object()
+        .add("source", Value::integer(l.source))
+        .add("region", l.source < 0 ? Value() : Value::string(region_name(l.region)));
+}
+
+Value curve_json(const Quadratic2& q) {
+    return Value::object()
+        .add("a", Value::number(q.a)).add("b", Value::number(q.b)).add("c", Value::number(q.c))
+        .add("d", Value::number(q.d)).add("e", Value::number(q.e)).add("f", Value::number(q.f))
+        .add("type", Value::string(conic_type_name(decompose_conic(q).type)));
+}
+
+Value event_json(const Event& e, const TargetFrame& frame, long long target) {
+    Value v = Value::object();
+    v.add("event", Value::string(event_name(e.kind)))
+        .add("step", Value::integer(e.step))
+        .add("insertion", Value::integer(e.insertion))
+        .add("radius", Value::number(e.radius));
+    auto point = [&] { v.add("point", vec2(e.point)).add("world", vec3(e.world)); };
+    switch (e.kind) {
+        case EventKind::TargetBegun: {
+            Value corners = Value::array();
+            for (Vec2 c : frame.corners) corners.push(vec2(c));
+            v.add("target", Value::integer(target)).add("corners", corners)
+                .add("degenerate", Value::boolean(frame.degenerate)).add("world", vec3(e.world));
+            break;
+        }
+        case EventKind::VoxelVisited:
+        case EventKind::VoxelCulled:
+            v.add("voxel", Value::integer(e.voxel)).add("distance", Value::number(e.distance));
+            break;
+        case EventKind::SourceChosen:
+        case EventKind::SourceCulled:
+            v.add("source", Value::integer(e.source)).add("voxel", Value::integer(e.voxel))
+                .add("distance", Value::number(e.distance));
+            break;
+        case EventKind::RegionsProjected: {
+            Value regions = Value::array();
+            for (const RegionPolygon& r : e.regions) {
+                Value poly = Value::array();
+                for (Vec2 p : r.polygon) poly.push(vec2(p));
+                regions.push(Value::object().add("region", Value::string(region_name(r.kind))).add("polygon", poly));
+            }
+            v.add("source", Value::integer(e.source)).add("regions", regions);
+            break;
+        }
+        case EventKind::DomainSplit: {
+            Value faces = Value::array();
+            for (int f : e.faces) faces.push(Value::integer(f));
+            v.add("source", Value::integer(e.source)).add("face", Value::integer(e.face)).add("faces", faces)
+                .add("curve", curve_json(e.curve));
+            break;
+        }
+        case EventKind::DomainCreated:
+            v.add("source", Value::integer(e.source)).add("face", Value::integer(e.face))
+                .add("label", label_json(e.label)).add("old_label", label_json(e.old_label));
+            break;
+        case EventKind::DomainMerged:
+            v.add("source", Value::integer(e.source)).add("face", Value::integer(e.face))
+                .add("other", Value::integer(e.other));
+            break;
+        case EventKind::ArcMaximum:
+            v.add("edge", Value::integer(e.other));
+            point();
+            v.add("value", Value::number(e.value));
+            break;
+        case EventKind::MaximumRaised:
+        case EventKind::SearchRadiusShrunk:
+        case EventKind::TargetFinished:
+            point();
+            v.add("value", Value::number(e.value));
+            break;
+    }
+    return v;
+}
+
+std::string event_text(const Value& v) {
+    char head[96];
+    std::snprintf(head, sizeof head, "%6lld  %-22s", v.fields[1].second.i, v.fields[0].second.s.c_str());
+    std::string out = head;
+    for (size_t k = 2; k < v.fields.size(); ++k) {
+        out += ' ';
+        out += v.fields[k].first + '=';
+        to_text(out, v.fields[k].second);
+    }
+    return out;
+}
+
+Value trace_final_json(const TargetSolver& ts, long steps) {
+    const DomainMesh* dm = ts.domain_mesh();  // null for a degenerate target
+    return Value::object()
+        .add("event", Value::string("final"))
+        .add("step", Value::integer(steps))
+        .add("target", Value::integer(ts.target()))
+        .add("max_sq", Value::number(ts.max_sq()))
+        .add("max", Value::number(std::sqrt(ts.max_sq())))
+        .add("max_point", vec3(ts.max_point()))
+        .add("domains", Value::integer(dm ? dm->num_live_faces() : 0))
+        .add("arcs", Value::integer(dm ? dm->num_live_edges() : 0))
+        .add("vertices", Value::integer(dm ? dm->num_live_vertices() : 0))
+        .add("insertions", Value::integer(ts.insertions()))
+        .add("degenerate", Value::boolean(dm == nullptr));
+}
+
+}  // namespace hlens
