@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds everything (Release) in build/ and runs the whole test suite,
 # including the debugger's tests (suite Gui), which run hlens headless under xvfb-run.
+# With CI set (.ci/run) it then runs scripts/sanitize.sh and scripts/fuzz.sh 60.
 # Exits non-zero if the build or any test fails.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,3 +21,9 @@ if [ -n "${CI:-}" ]; then
   fi
 fi
 ctest --test-dir build --output-on-failure -j2
+# In CI also: the whole suite again under ASan+UBSan (Debug, build-asan/), and every mesh reader
+# fuzzed for 60 s (build-fuzz/). See README.md, "Sanitizers and fuzzing".
+if [ -n "${CI:-}" ]; then
+  bash scripts/sanitize.sh
+  bash scripts/fuzz.sh 60
+fi
