@@ -60,6 +60,8 @@ struct Event {
     double radius = 0;        // search radius (world units)
 };
 
+// A solver borrows scratch memory (visited-voxel and -source marks) of the thread that constructs
+// it: step it on that thread, or at least never after that thread has ended.
 class TargetSolver {
 public:
     // Target `target` of mesh `side` of the grid against the other mesh.
