@@ -1,13 +1,14 @@
 // hlens-cli: the command-line front end of Hausdorff Lens.
 //
 //   hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld]
+//                          [--stats] [--histogram N] [--tolerance T] [--export-errors PATH.ply]
 //   hlens-cli trace A B --target I [--json] [--no-weld]
 //   hlens-cli --help | help
 //
 // `distance` prints h(A,B), h(B,A) and the Hausdorff distance (core/hausdorff.h); `trace` runs one
 // target triangle of A with core/target_solver.h and prints every event as it happens, one per line.
 // Exit codes: 0 success, 2 bad usage or bad input (one line "hlens-cli: <message>" on stderr),
-// 1 anything unexpected.
+// 3 --verify disagrees, 4 not within --tolerance, 1 anything unexpected.
 #include <unistd.h>
 
 #include <algorithm>
@@ -32,6 +33,7 @@
 #include "mesh.h"
 #include "mesh_io.h"
 #include "regions.h"
+#include "surface_stats.h"
 #include "target_solver.h"
 #include "voxel_grid.h"
 
@@ -42,6 +44,7 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld] [--verify]\n"
+    "                         [--stats] [--histogram N] [--tolerance T] [--export-errors PATH.ply]\n"
     "  hlens-cli trace A B --target I [--json] [--no-weld]\n"
     "  hlens-cli --help | help\n"
     "\n"
@@ -56,6 +59,15 @@ const char* kUsage =
     "  --verify      also bracket each one-sided distance independently, by Lipschitz subdivision of\n"
     "                the measured mesh (to 1e-4 of the bounding-box diagonal), and check that the\n"
     "                exact value lies in the bracket (exit code 3 if it does not)\n"
+    "  --stats       exact surface statistics per direction: area, mean and RMS distance, the 50/90/95/99th\n"
+    "                area-weighted percentiles (the full construction of every triangle: slower)\n"
+    "  --histogram N with --stats: the area per distance bin, N bins from 0 to the largest distance\n"
+    "  --tolerance T within_tolerance: is the distance at most T? (exit code 4 if not); with --stats also\n"
+    "                the area and fraction of each surface farther than T; without, the run stops as soon\n"
+    "                as a vertex farther than T is found\n"
+    "  --export-errors PATH.ply  the measured mesh with its error map (per-face max/mean/RMS distance,\n"
+    "                per-vertex distance, as PLY 'quality'): PATH-ab.ply and PATH-ba.ply, or PATH.ply\n"
+    "                with --one-sided\n"
     "\n"
     "trace      run target triangle I of A against B and print every event of the solver as it\n"
     "           happens (one line each), then a final summary line\n"
@@ -63,7 +75,8 @@ const char* kUsage =
     "  --json        one JSON object per line\n"
     "\n"
     "formats: .obj .ply .stl .off .gltf .glb\n"
-    "exit codes: 0 success, 2 bad usage or bad input, 3 --verify found a disagreement, 1 unexpected error\n";
+    "exit codes: 0 success, 2 bad usage or bad input, 3 --verify found a disagreement, 4 not within --tolerance,\n"
+    "            1 unexpected error\n";
 
 // Bad usage or bad input: exit code 2.
 struct UsageError : std::runtime_error {
@@ -200,6 +213,10 @@ struct Args {
     std::string command;
     std::vector<std::string> files;
     bool json = false, one_sided = false, weld = true, verify = false;
+    bool stats = false;                  // issue 9: --stats, --histogram, --tolerance, --export-errors
+    int histogram = 0;
+    double tolerance = -1;               // < 0: none
+    std::string export_errors;
     Mode mode = Mode::Fast;
     int threads = 0;          // 0: all cores
     long long target = -1;
@@ -214,6 +231,39 @@ long long parse_integer(const std::string& option, const std::string& text) {
     if (text.empty() || *end != '\0' || errno == ERANGE)
         throw UsageError(option + " needs an integer, got '" + text + "'");
     return v;
+}
+
+double parse_number(const std::string& option, const std::string& text) {
+    errno = 0;
+    char* end = nullptr;
+    double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+        throw UsageError(option + " needs a number, got '" + text + "'");
+    return v;
+}
+
+// The options of issue 9 (statistics, tolerance, error map); true if `w` is one of them.
+template <class TakeValue>
+bool parse_stats_option(Args& a, const std::string& w, bool has_value, TakeValue& take_value) {
+    if (w == "--stats") {
+        if (has_value) throw UsageError("--stats takes no value");
+        a.stats = true;
+    } else if (w == "--histogram") {
+        long long n = parse_integer("--histogram", take_value());
+        if (n < 1 || n > 100000) throw UsageError("--histogram must be between 1 and 100000, got " + std::to_string(n));
+        a.histogram = (int)n;
+    } else if (w == "--tolerance") {
+        a.tolerance = parse_number("--tolerance", take_value());
+        if (a.tolerance < 0) throw UsageError("--tolerance must be >= 0, got " + format_double(a.tolerance, 17));
+    } else if (w == "--export-errors") {
+        a.export_errors = take_value();
+        const std::string& e = a.export_errors;
+        if (e.size() < 5 || (e.substr(e.size() - 4) != ".ply" && e.substr(e.size() - 4) != ".PLY"))
+            throw UsageError("--export-errors needs a path ending in .ply, got '" + e + "'");
+    } else {
+        return false;
+    }
+    return true;
 }
 
 Args parse_args(int argc, char** argv) {
@@ -256,6 +306,7 @@ Args parse_args(int argc, char** argv) {
             long long n = parse_integer("--threads", take_value());
             if (n < 1 || n > 4096) throw UsageError("--threads must be between 1 and 4096, got " + std::to_string(n));
             a.threads = (int)n;
+        } else if (distance && parse_stats_option(a, w, has_value, take_value)) {
         } else if (!distance && w == "--target") {
             a.target = parse_integer("--target", take_value());
             a.has_target = true;
@@ -269,6 +320,7 @@ Args parse_args(int argc, char** argv) {
         throw UsageError(a.command + " needs two mesh files, got " + std::to_string(a.files.size()) +
                          " (see hlens-cli --help)");
     if (!distance && !a.has_target) throw UsageError("trace needs --target I");
+    if (a.histogram > 0 && !a.stats) throw UsageError("--histogram needs --stats");
     return a;
 }
 
@@ -350,11 +402,152 @@ void print_one_sided(const char* title, const char* from, const char* to, const 
     std::printf("   exact targets: %zu of %zu (%zu exact solves), %.3f s\n", r.exact_targets, targets, r.exact_solves, r.seconds);
 }
 
+// ---------------------------------------------------------------- statistics (issue 9)
+
+// Exact surface statistics per direction (core/surface_stats.h), when --stats or --export-errors
+// asks for them; empty otherwise.
+std::vector<SurfaceStats> direction_stats(const Args& args, const TriangleMesh& A, const TriangleMesh& B,
+                                          const HausdorffResult& r) {
+    std::vector<SurfaceStats> out;
+    if (!args.stats && args.export_errors.empty()) return out;
+    VoxelGrid grid(A, B);
+    for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
+        StatsOptions o;
+        o.threads = args.threads;
+        o.histogram_bins = args.histogram;
+        o.tolerance = args.stats ? args.tolerance : -1;
+        if (!args.stats) o.percentiles.clear();  // the error map needs no percentiles
+        o.known_max = (side == 0 ? r.a_to_b : r.b_to_a).distance;
+        out.push_back(surface_stats(grid, side, o));
+    }
+    return out;
+}
+
+Value numbers_json(const std::vector<double>& v) {
+    Value a = Value::array();
+    for (double x : v) a.push(Value::number(x));
+    return a;
+}
+
+// The fields --stats adds to one direction's object.
+Value with_stats(Value v, const Args& args, const std::vector<SurfaceStats>& stats, size_t i) {
+    if (!args.stats || i >= stats.size()) return v;
+    const SurfaceStats& s = stats[i];
+    Value pct = Value::object();
+    const char* names[] = {"50", "90", "95", "99"};
+    for (size_t k = 0; k < s.percentiles.size() && k < 4; ++k) pct.add(names[k], Value::number(s.percentiles[k]));
+    v.add("area", Value::number(s.area)).add("mean", Value::number(s.mean())).add("rms", Value::number(s.rms()))
+        .add("percentiles", pct);
+    if (args.histogram > 0)
+        v.add("histogram", Value::object().add("edges", numbers_json(s.histogram_edges)).add("area", numbers_json(s.histogram_area)));
+    if (args.tolerance >= 0)
+        v.add("area_above", Value::number(s.area_above)).add("fraction_above", Value::number(s.fraction_above));
+    v.add("stats_error", Value::object()
+                             .add("area", Value::number(s.err_area))
+                             .add("integral_d2", Value::number(s.err_d2))
+                             .add("integral_d_estimate", Value::number(s.err_d))
+                             .add("percentile", Value::number(s.percentile_tolerance)));
+    v.add("stats_seconds", Value::object()
+                               .add("first_pass", Value::number(s.seconds_first_pass))
+                               .add("percentiles", Value::number(s.seconds_percentiles))
+                               .add("percentile_passes", Value::integer(s.percentile_passes))
+                               .add("rerun_targets", Value::integer((long long)s.rerun_targets)));
+    if (s.sliver_targets) v.add("sliver_triangles", Value::integer((long long)s.sliver_targets)).add("sliver_area", Value::number(s.sliver_area));
+    return v;
+}
+
+void print_stats(const Args& args, const std::vector<SurfaceStats>& stats, size_t i) {
+    if (!args.stats || i >= stats.size()) return;
+    const SurfaceStats& s = stats[i];
+    std::printf("   area %s, mean %s, RMS %s\n", g(s.area, 10).c_str(), g(s.mean(), 10).c_str(), g(s.rms(), 10).c_str());
+    std::printf("   percentiles (by area):");
+    const char* names[] = {"50", "90", "95", "99"};
+    for (size_t k = 0; k < s.percentiles.size() && k < 4; ++k) std::printf(" %s%% %s", names[k], g(s.percentiles[k], 10).c_str());
+    std::printf("\n");
+    if (args.tolerance >= 0)
+        std::printf("   farther than %s: area %s (%s%%)\n", g(args.tolerance, 10).c_str(), g(s.area_above, 10).c_str(),
+                    g(100 * s.fraction_above, 6).c_str());
+    for (size_t k = 0; k < s.histogram_area.size(); ++k)
+        std::printf("   [%s, %s]: area %s\n", g(s.histogram_edges[k], 8).c_str(), g(s.histogram_edges[k + 1], 8).c_str(),
+                    g(s.histogram_area[k], 8).c_str());
+    if (s.sliver_targets)
+        std::printf("   %zu sliver triangles (area %s) left out of the statistics\n", s.sliver_targets, g(s.sliver_area, 6).c_str());
+}
+
+// The error map of one direction as PLY: every vertex with its distance, every face with its
+// max, mean and RMS distance; "quality" (max on faces) is the scalar field MeshLab reads.
+void write_error_ply(const std::string& path, const TriangleMesh& M, const SurfaceStats& s) {
+    FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) throw UsageError("cannot write " + path + ": " + std::strerror(errno));
+    std::fprintf(f, "ply\nformat ascii 1.0\ncomment hlens-cli error map: distance from this mesh to the other\n");
+    std::fprintf(f, "element vertex %zu\nproperty double x\nproperty double y\nproperty double z\nproperty float quality\n"
+                 "property double distance\n", M.positions.size());
+    std::fprintf(f, "element face %zu\nproperty list uchar int vertex_indices\nproperty float quality\n"
+                 "property double max_distance\nproperty double mean_distance\nproperty double rms_distance\nend_header\n",
+                 M.num_triangles());
+    for (size_t v = 0; v < M.positions.size(); ++v) {
+        const double d = std::max(0.0, s.vertex_distance[v]);  // a vertex no triangle uses: 0
+        std::fprintf(f, "%.17g %.17g %.17g %.9g %.17g\n", M.positions[v].x, M.positions[v].y, M.positions[v].z, d, d);
+    }
+    for (size_t t = 0; t < M.num_triangles(); ++t) {
+        const TriangleStats& ts = s.triangles[t];
+        std::fprintf(f, "3 %u %u %u %.9g %.17g %.17g %.17g\n", M.triangles[t][0], M.triangles[t][1], M.triangles[t][2], ts.max,
+                     ts.max, ts.mean(), ts.rms());
+    }
+    if (std::fclose(f) != 0) throw UsageError("cannot write " + path);
+}
+
+void export_errors(const Args& args, const TriangleMesh& A, const TriangleMesh& B, const std::vector<SurfaceStats>& stats) {
+    if (args.export_errors.empty()) return;
+    if (args.one_sided) { write_error_ply(args.export_errors, A, stats[0]); return; }
+    const std::string stem = args.export_errors.substr(0, args.export_errors.size() - 4);
+    write_error_ply(stem + "-ab.ply", A, stats[0]);
+    write_error_ply(stem + "-ba.ply", B, stats[1]);
+}
+
+// --tolerance without --stats: a verdict. A vertex farther than T (exact point-mesh distance)
+// proves h > T at once: report it and stop (-1: no such vertex, run the whole computation).
+int early_tolerance_verdict(const Args& args, const TriangleMesh& A, const TriangleMesh& B) {
+    VoxelGrid grid(A, B);
+    for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
+        const SampledBound sb = sampled_lower_bound(side == 0 ? A : B, grid, side, 1);
+        if (!(sb.value > args.tolerance)) continue;
+        const char* dir = side == 0 ? "a_to_b" : "b_to_a";
+        if (args.json) {
+            Value v = Value::object();
+            v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("tolerance", Value::number(args.tolerance))
+                .add("within_tolerance", Value::boolean(false)).add("stopped_early", Value::boolean(true))
+                .add("direction", Value::string(dir)).add("point", vec3(sb.point))
+                .add("triangle", Value::integer(sb.triangle)).add("lower", Value::number(sb.value));
+            std::string out;
+            to_json(out, v);
+            print_line(out);
+        } else {
+            std::printf("NOT within tolerance %s: the vertex %s of %s (triangle %u) is at distance %s from %s,\n"
+                        "so %s >= %s (stopped early, without computing the distance)\n",
+                        g(args.tolerance).c_str(), point_text(sb.point).c_str(), side == 0 ? "A" : "B", sb.triangle,
+                        g(sb.value).c_str(), side == 0 ? "B" : "A", side == 0 ? "h(A,B)" : "h(B,A)", g(sb.value).c_str());
+        }
+        return 4;
+    }
+    return -1;
+}
+
+void add_tolerance_json(Value& v, const Args& args, bool within) {
+    if (args.tolerance < 0) return;
+    v.add("tolerance", Value::number(args.tolerance)).add("within_tolerance", Value::boolean(within));
+    if (!args.stats) v.add("stopped_early", Value::boolean(false));
+}
+
 int run_distance(const Args& args) {
     LoadOptions lo;
     lo.weld = args.weld;
     TriangleMesh A = load_mesh(args.files[0], lo);
     TriangleMesh B = load_mesh(args.files[1], lo);
+    if (args.tolerance >= 0 && !args.stats && args.export_errors.empty()) {
+        const int code = early_tolerance_verdict(args, A, B);
+        if (code >= 0) return code;
+    }
 
     HausdorffOptions opt;
     opt.mode = args.mode;
@@ -385,6 +578,10 @@ int run_distance(const Args& args) {
         }
     }
     const bool verified = std::all_of(checks.begin(), checks.end(), [](const Check& c) { return c.ok; });
+    const std::vector<SurfaceStats> stats = direction_stats(args, A, B, r);
+    export_errors(args, A, B, stats);
+    const bool within = args.tolerance < 0 || (args.one_sided ? r.a_to_b.distance : r.hausdorff) <= args.tolerance;
+    const int code = !verified ? 3 : within ? 0 : 4;
     auto with_check = [&](Value v, size_t i) {
         if (i < checks.size())
             v.add("verify", Value::object()
@@ -396,30 +593,36 @@ int run_distance(const Args& args) {
 
     if (args.json) {
         Value v = Value::object();
-        v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("a_to_b", with_check(one_sided_json(r.a_to_b), 0));
-        if (!args.one_sided) v.add("b_to_a", with_check(one_sided_json(r.b_to_a), 1)).add("hausdorff", Value::number(r.hausdorff));
+        v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("a_to_b", with_stats(with_check(one_sided_json(r.a_to_b), 0), args, stats, 0));
+        if (!args.one_sided)
+            v.add("b_to_a", with_stats(with_check(one_sided_json(r.b_to_a), 1), args, stats, 1)).add("hausdorff", Value::number(r.hausdorff));
+        add_tolerance_json(v, args, within);
         v.add("seconds", Value::number(r.seconds))
             .add("mode", Value::string(mode_name(args.mode)))
             .add("threads", Value::integer(threads));
         std::string out;
         to_json(out, v);
         print_line(out);
-        return verified ? 0 : 3;
+        return code;
     }
     print_mesh_summary("A", A);
     print_mesh_summary("B", B);
     std::printf("\n");
     print_one_sided("h(A,B)", "A", "B", r.a_to_b, A.num_triangles());
+    print_stats(args, stats, 0);
     if (!args.one_sided) {
         std::printf("\n");
         print_one_sided("h(B,A)", "B", "A", r.b_to_a, B.num_triangles());
+        print_stats(args, stats, 1);
         std::printf("\nHausdorff distance = %s\n", g(r.hausdorff).c_str());
     }
     std::printf("\nmode %s, %d thread%s, %.3f s\n", mode_name(args.mode), threads, threads == 1 ? "" : "s", r.seconds);
     for (size_t i = 0; i < checks.size(); ++i)
         std::printf("verify %s: Lipschitz bracket [%s, %s] %s\n", i == 0 ? "h(A,B)" : "h(B,A)", g(checks[i].bound.lower).c_str(),
                     g(checks[i].bound.upper).c_str(), checks[i].ok ? "holds the exact value" : "DOES NOT hold the exact value");
-    return verified ? 0 : 3;
+    if (args.tolerance >= 0)
+        std::printf("%s tolerance %s\n", within ? "within" : "NOT within", g(args.tolerance).c_str());
+    return code;
 }
 
 // ---------------------------------------------------------------- trace

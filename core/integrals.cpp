@@ -314,6 +314,30 @@ Integral face_sqrt_integral(const DomainMesh& m, int f, const Quadratic2& P) {
     });
 }
 
+Interval convex_range(const Quadratic2& P, const Box2& b) {
+    // The largest value of a convex function over a box is at a corner.
+    const Vec2 c[4] = {b.lo, {b.hi.x, b.lo.y}, b.hi, {b.lo.x, b.hi.y}};
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (const Vec2& p : c) hi = std::max(hi, P(p));
+    // The smallest: at the interior critical point if there is one inside, else on an edge (where
+    // the critical points form a line, that line also meets the boundary at the same value).
+    const double det = P.a * P.c - P.b * P.b;
+    if (det > 0) {
+        const Vec2 m{(P.b * P.e - P.c * P.d) / det, (P.b * P.d - P.a * P.e) / det};
+        if (m.x >= b.lo.x && m.x <= b.hi.x && m.y >= b.lo.y && m.y <= b.hi.y) lo = P(m);
+    }
+    for (int k = 0; k < 4; ++k) {  // P along an edge p + s u, s in [0, 1]: a 1D convex quadratic
+        const Vec2 p = c[k], u = c[(k + 1) % 4] - c[k];
+        const double qa = P.a * u.x * u.x + 2 * P.b * u.x * u.y + P.c * u.y * u.y;
+        const double qb = dot(P.gradient(p), u);  // the derivative at s = 0
+        double s = qa > 0 ? -qb / (2 * qa) : 0;
+        s = std::min(1.0, std::max(0.0, s));
+        lo = std::min({lo, P(p), P(p + s * u)});
+    }
+    const double m = 1e-13 * (P.scale() * (1 + norm2(b.lo) + norm2(b.hi)));  // rounding of the evaluations
+    return {lo - m, hi + m};
+}
+
 DomainIntegrals domain_integrals(const DomainMesh& m) {
     DomainIntegrals r;
     r.min_d2_lower = HUGE_VAL;
@@ -326,7 +350,7 @@ DomainIntegrals domain_integrals(const DomainMesh& m) {
         r.int_d2 += q.value; r.err_d2 += q.error;
         r.int_d += s.value; r.err_d += s.error;
         const Box2 b = m.face_box((int)f);
-        r.min_d2_lower = std::min(r.min_d2_lower, std::max(0.0, F[f].poly.range(b.lo, b.hi).lo));
+        r.min_d2_lower = std::min(r.min_d2_lower, std::max(0.0, convex_range(F[f].poly, b).lo));
         r.max_d2 = std::max(r.max_d2, F[f].max_value);
     }
     if (r.min_d2_lower == HUGE_VAL) r.min_d2_lower = 0;
@@ -339,13 +363,18 @@ std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<dou
     DomainMesh copy = m;  // split in place: the caller's mesh is left alone
     for (size_t j = 0; j < levels.size(); ++j) {
         const double t2 = levels[j];
+        // Nested splits are exact only while the bands between levels are much wider than the
+        // snap tolerance of the domain mesh (1e-8): a band is at least as wide as the difference
+        // of the distances (d is 1-Lipschitz), so a level closer than 1e-5 to the previous one
+        // splits a fresh copy instead.
+        if (j > 0 && std::sqrt(std::max(0.0, t2)) - std::sqrt(std::max(0.0, levels[j - 1])) < 1e-5) copy = m;
         const size_t nfaces = copy.faces().size();
         for (size_t f = 1; f < nfaces; ++f) {
             const DomainMesh::Face& F = copy.faces()[f];
             if (!F.alive || F.infinite) continue;
             const Quadratic2 P = F.poly;
             const Box2 b = copy.cached_face_box((int)f);
-            const Interval r = P.range(b.lo, b.hi);
+            const Interval r = convex_range(P, b);
             if (r.hi <= t2) continue;                                   // wholly at or below t
             if (r.lo > t2) { out[j] += face_area_exact(copy, (int)f).value; continue; }
             Quadratic2 g = P;

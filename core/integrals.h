@@ -58,8 +58,13 @@ struct DomainIntegrals {
 DomainIntegrals domain_integrals(const DomainMesh& m);
 
 // Area (frame units) of the part of the target where d^2 > t2, for each t2 of `levels`
-// (ascending), by splitting one copy of the mesh by P - t2 level after level.
+// (ascending), by splitting one copy of the mesh by P - t2 level after level (a fresh copy for a
+// level within 1e-5 of the previous one, so no band between levels is near the snap tolerance).
 std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels);
+
+// Bounds of a convex quadratic (every d^2 is one) over a box: its exact range there, widened by
+// rounding; much tighter than Quadratic2::range's interval arithmetic.
+Interval convex_range(const Quadratic2& P, const Box2& box);
 
 // Gauss-Legendre nodes and weights on [-1, 1] (Newton on the Legendre polynomial), for tests.
 void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w);

@@ -4,6 +4,9 @@
 #include "surface_stats.h"
 
 #include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -27,6 +30,7 @@ struct TargetPass {
     bool sliver = false;
     double sliver_area = 0;
     std::array<double, 3> corner_d{{0, 0, 0}};
+    double err_area = 0, err_d2 = 0, err_d = 0;   // quadrature bounds and estimate (world units)
 };
 
 double triangle_area(const std::array<Vec3, 3>& c) { return 0.5 * norm(cross(c[1] - c[0], c[2] - c[0])); }
@@ -67,6 +71,9 @@ TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::
     r.tri.int_d2 = di.int_d2 * s * s * s * s;
     r.tri.int_d = di.int_d * s * s * s;
     r.dmin = std::sqrt(di.min_d2_lower) * s;
+    r.err_area = di.err_area * s * s;
+    r.err_d2 = di.err_d2 * s * s * s * s;
+    r.err_d = di.err_d * s * s * s;
     r.partial = partial_areas(*dm, s, r.dmin, r.tri.max, levels);
     return r;
 }
@@ -87,41 +94,85 @@ std::vector<double> level_areas(const std::vector<TargetPass>& pass, const std::
 }
 
 // The percentiles by bisection (second pass): each starts bracketed by two probe levels.
-struct Bracket { double lo, hi, goal; bool done; };
+struct Bracket {
+    double lo, hi, goal;       // A(lo) > goal >= A(hi): the percentile lies in (lo, hi]
+    double alo, ahi;           // A(lo), A(hi)
+    bool done;
+};
 
-void bisect_percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, std::vector<Bracket>& br,
-                        double width, const StatsOptions& opt, SurfaceStats& out) {
-    // Targets whose range meets an open bracket: re-run, their domain meshes kept.
+// Targets whose distance range meets an open bracket: only these can tell the brackets' ends apart.
+std::vector<uint32_t> targets_in_brackets(const std::vector<TargetPass>& pass, const std::vector<Bracket>& br) {
     std::vector<uint32_t> rerun;
     for (uint32_t t = 0; t < pass.size(); ++t) {
         if (pass[t].sliver) continue;
         for (const Bracket& b : br)
             if (!b.done && pass[t].dmin < b.hi && pass[t].tri.max > b.lo) { rerun.push_back(t); break; }
     }
-    out.rerun_targets = rerun.size();
-    std::vector<std::unique_ptr<TargetSolver>> kept(rerun.size());
+    return rerun;
+}
+
+// One refinement pass: the targets that meet an open bracket are re-run and clipped at levels
+// inside it: k evenly spaced (the bracket shrinks at least k + 1 times whatever A looks like) and a
+// ladder guess +- width/2 * 16^j around where the straight line between (lo, A(lo)) and (hi, A(hi))
+// meets the goal. A is smooth, so the guess is close, the ladder brackets it tightly, and the next
+// pass's line through the tight bracket lands within width: a few passes in all.
+// Domain meshes kept between the passes over the targets, up to a memory budget; the others are
+// rebuilt (re-running the construction) in every pass.
+struct MeshCache {
+    std::vector<std::unique_ptr<DomainMesh>> mesh;
+    std::vector<double> scale;
+    std::atomic<size_t> bytes{0};
+    size_t budget = size_t(256) << 20;
+    explicit MeshCache(size_t n) : mesh(n), scale(n) {}
+    static size_t size_of(const DomainMesh& m) {  // an estimate, twice the main arrays
+        return 2 * (m.edges().size() * sizeof(DomainMesh::Edge) + m.half_edges().size() * sizeof(DomainMesh::HalfEdge) +
+                    m.faces().size() * (sizeof(DomainMesh::Face) + 16) + m.vertices().size() * sizeof(DomainMesh::Vertex));
+    }
+    // fn(mesh, scale) with target t's finished domain mesh.
+    template <class Fn>
+    void with_mesh(const VoxelGrid& grid, int side, uint32_t t, Fn&& fn) {
+        if (mesh[t]) return fn(*mesh[t], scale[t]);
+        TargetSolver ts(grid, side, t);
+        ts.run();
+        const size_t sz = size_of(*ts.domain_mesh());
+        if (bytes.fetch_add(sz) + sz <= budget) {
+            mesh[t] = std::make_unique<DomainMesh>(*ts.domain_mesh());
+            scale[t] = ts.frame().scale;
+        } else {
+            bytes.fetch_sub(sz);
+        }
+        fn(*ts.domain_mesh(), ts.frame().scale);
+    }
+};
+
+void refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, std::vector<Bracket>& br,
+                     const std::vector<uint32_t>& rerun, int k, double width, const StatsOptions& opt, MeshCache& cache) {
+    std::vector<double> levels;
+    for (const Bracket& b : br) {
+        if (b.done) continue;
+        for (int j = 1; j <= k; ++j) levels.push_back(b.lo + (b.hi - b.lo) * j / (k + 1));
+        const double guess = b.alo > b.ahi ? b.lo + (b.hi - b.lo) * (b.alo - b.goal) / (b.alo - b.ahi) : 0.5 * (b.lo + b.hi);
+        for (double step = 0.5 * width; step < b.hi - b.lo; step *= 16)
+            for (double t : {guess - step, guess + step})
+                if (t > b.lo && t < b.hi) levels.push_back(t);
+    }
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+    std::vector<TargetPass> now = pass;  // the same targets, with partial areas at the new levels
+    for (TargetPass& p : now) p.partial.clear();
     parallel_for(rerun.size(), resolve_threads(opt.threads), opt.cancel, [&](size_t i) {
-        kept[i] = std::make_unique<TargetSolver>(grid, side, rerun[i]);
-        kept[i]->run();
+        TargetPass& p = now[rerun[i]];
+        cache.with_mesh(grid, side, rerun[i], [&](const DomainMesh& m, double scale) {
+            p.partial = partial_areas(m, scale, p.dmin, p.tri.max, levels);
+        });
     });
-    if (opt.cancel && opt.cancel->load()) { out.cancelled = true; return; }
-    std::vector<double> above(rerun.size());
+    const std::vector<double> A = level_areas(now, levels);
     for (Bracket& b : br) {
-        while (!b.done && b.hi - b.lo > width) {
-            const double mid = 0.5 * (b.lo + b.hi);
-            double A = 0;  // the targets wholly above mid, then the kept ones clipped at mid
-            for (const TargetPass& p : pass)
-                if (!p.sliver && p.dmin > mid && !(p.dmin < b.hi && p.tri.max > b.lo)) A += p.tri.area;
-            parallel_for(rerun.size(), resolve_threads(opt.threads), nullptr, [&](size_t i) {
-                const TargetPass& p = pass[rerun[i]];
-                above[i] = 0;
-                if (!(p.dmin < b.hi && p.tri.max > b.lo)) return;  // counted above (or zero)
-                const double s = kept[i]->frame().scale;
-                auto part = partial_areas(*kept[i]->domain_mesh(), s, p.dmin, p.tri.max, {mid});
-                above[i] = part.empty() ? (mid < p.dmin ? p.tri.area : 0.0) : part[0].second;
-            });
-            for (double a : above) A += a;
-            (A > b.goal ? b.lo : b.hi) = mid;
+        if (b.done) continue;
+        for (size_t j = 0; j < levels.size(); ++j) {
+            if (levels[j] <= b.lo || levels[j] >= b.hi) continue;
+            if (A[j] > b.goal) { b.lo = levels[j]; b.alo = A[j]; }
+            else { b.hi = levels[j]; b.ahi = A[j]; break; }
         }
     }
 }
@@ -131,21 +182,33 @@ void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>&
     std::vector<Bracket> br;
     for (double p : opt.percentiles) {
         const double goal = (1 - p / 100) * out.area;  // the area that may lie above the percentile
-        Bracket b{0, probes.back(), goal, false};
+        Bracket b{0, std::max(probes.back(), out.max), goal, out.area, 0, false};
         if (probe_area[0] <= goal) { b.hi = 0; b.done = true; }  // d = 0 on enough of the surface
         for (size_t j = 0; j < probes.size() && !b.done; ++j)
-            if (probe_area[j] > goal) b.lo = probes[j];
-            else { b.hi = probes[j]; break; }
+            if (probe_area[j] > goal) { b.lo = probes[j]; b.alo = probe_area[j]; }
+            else { b.hi = probes[j]; b.ahi = probe_area[j]; break; }
         br.push_back(b);
     }
-    bisect_percentiles(grid, side, pass, br, out.percentile_tolerance, opt, out);
+    // Narrow the brackets by passes over the targets that meet them.
+    MeshCache cache(pass.size());
+    for (;;) {
+        for (Bracket& b : br) b.done = b.done || b.hi - b.lo <= out.percentile_tolerance;
+        const std::vector<uint32_t> rerun = targets_in_brackets(pass, br);
+        if (rerun.empty() || (opt.cancel && opt.cancel->load())) break;
+        out.rerun_targets += rerun.size();
+        ++out.percentile_passes;
+        refine_brackets(grid, side, pass, br, rerun, 1, out.percentile_tolerance, opt, cache);
+    }
+    out.cancelled = opt.cancel && opt.cancel->load();
     for (const Bracket& b : br) out.percentiles.push_back(b.hi);
 }
 
 // The probe levels (ascending): uniform in [0, max], the histogram edges and the tolerance.
 std::vector<double> probe_levels(double dmax, const StatsOptions& opt, std::vector<double>& hist_edges) {
     std::vector<double> levels;
+    // Uniform, and geometric towards 0 (most of a surface is usually much nearer than the maximum).
     for (int k = 0; k <= opt.probes; ++k) levels.push_back(dmax * k / opt.probes);
+    for (int k = 1; k <= 24; ++k) levels.push_back(dmax * std::pow(2.0, -0.5 * k));
     if (opt.histogram_bins > 0) {
         const double top = opt.histogram_max >= 0 ? opt.histogram_max : dmax;
         for (int k = 0; k <= opt.histogram_bins; ++k) hist_edges.push_back(top * k / opt.histogram_bins);
@@ -175,10 +238,12 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     const TriangleMesh& M = grid.mesh(side);
     const size_t n = M.num_triangles();
     SurfaceStats out;
-    const double dmax = largest_distance(grid, side, opt);
+    const double dmax = opt.known_max >= 0 ? opt.known_max : largest_distance(grid, side, opt);
     std::vector<double> hist_edges;
     const std::vector<double> levels = probe_levels(dmax, opt, hist_edges);
 
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
     std::vector<TargetPass> pass(n);
     ProgressTicker prog(opt.progress, n);
     parallel_for(n, resolve_threads(opt.threads), opt.cancel, [&](size_t t) {
@@ -198,6 +263,9 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
         out.area += p.tri.area;
         out.int_d += p.tri.int_d;
         out.int_d2 += p.tri.int_d2;
+        out.err_area += p.err_area;
+        out.err_d2 += p.err_d2;
+        out.err_d += p.err_d;
     }
     const std::vector<double> A = level_areas(pass, levels);
     if (opt.histogram_bins > 0) {
@@ -217,7 +285,10 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     out.percentile_tolerance = 1e-9 * box.diagonal();
     std::vector<double> probes, probe_area;
     for (size_t j = 0; j < levels.size(); ++j) { probes.push_back(levels[j]); probe_area.push_back(A[j]); }
+    const auto t1 = Clock::now();
+    out.seconds_first_pass = std::chrono::duration<double>(t1 - t0).count();
     if (!opt.percentiles.empty()) percentiles(grid, side, pass, probes, probe_area, opt, out);
+    out.seconds_percentiles = std::chrono::duration<double>(Clock::now() - t1).count();
     return out;
 }
 

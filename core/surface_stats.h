@@ -29,7 +29,8 @@ struct StatsOptions {
     int histogram_bins = 0;                            // 0: no histogram
     double histogram_max = -1;                         // upper edge; < 0: the largest distance
     double tolerance = -1;                             // < 0: none
-    int probes = 64;                                   // probe levels of the first pass
+    int probes = 32;                                   // probe levels of the first pass
+    double known_max = -1;                             // the one-sided distance if known (else found first)
     const std::atomic<bool>* cancel = nullptr;
     std::function<void(double fraction)> progress;
 };
@@ -56,7 +57,9 @@ struct SurfaceStats {
     size_t sliver_targets = 0;
     double sliver_area = 0;
     double percentile_tolerance = 0;                  // bisection stops at this width (1e-9 diag)
-    size_t rerun_targets = 0;                         // targets re-run for the percentiles
+    size_t rerun_targets = 0;                         // targets re-run for the percentiles (all passes)
+    int percentile_passes = 0;                        // passes over the targets after the first
+    double seconds_first_pass = 0, seconds_percentiles = 0;
     bool cancelled = false;
 };
 
