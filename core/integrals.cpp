@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 #include <functional>
+#include <memory>
 
 namespace hlens {
 
@@ -357,32 +358,71 @@ DomainIntegrals domain_integrals(const DomainMesh& m) {
     return r;
 }
 
-std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels) {
-    std::vector<double> out(levels.size(), 0.0);
-    if (levels.empty()) return out;
-    DomainMesh copy = m;  // split in place: the caller's mesh is left alone
-    for (size_t j = 0; j < levels.size(); ++j) {
-        const double t2 = levels[j];
+namespace {
+// The levels' work on one mesh: face areas kept per face id until a split changes the face, and
+// the faces' ranges, so a level that cuts no face needs neither a copy nor a split.
+struct LevelClipper {
+    const DomainMesh& pristine;
+    std::unique_ptr<DomainMesh> copy;   // made at the first level that cuts a face
+    std::vector<double> area;           // per face id of the current mesh, NaN: not known
+    double last_cut = -HUGE_VAL;        // the last level (a distance) the copy was split at
+
+    explicit LevelClipper(const DomainMesh& m) : pristine(m) {}
+    const DomainMesh& mesh() const { return copy ? *copy : pristine; }
+    double face_area(int f) {
+        if ((size_t)f >= area.size()) area.resize(mesh().faces().size(), NAN);
+        if (std::isnan(area[f])) area[f] = face_area_exact(mesh(), f).value;
+        return area[f];
+    }
+    // Does some live face of the current mesh straddle t2?
+    bool cuts(double t2) {
+        const auto& F = mesh().faces();
+        for (size_t f = 1; f < F.size(); ++f) {
+            if (!F[f].alive || F[f].infinite) continue;
+            const Interval r = convex_range(F[f].poly, mesh().face_box((int)f));
+            if (r.lo <= t2 && t2 < r.hi) return true;
+        }
+        return false;
+    }
+    double above(double t2);
+};
+
+double LevelClipper::above(double t2) {
+    const double t = std::sqrt(std::max(0.0, t2));
+    if (cuts(t2)) {
         // Nested splits are exact only while the bands between levels are much wider than the
-        // snap tolerance of the domain mesh (1e-8): a band is at least as wide as the difference
-        // of the distances (d is 1-Lipschitz), so a level closer than 1e-5 to the previous one
+        // domain mesh's snap tolerance (1e-8): a band is at least as wide as the difference of
+        // the distances (d is 1-Lipschitz), so a level closer than 1e-6 to the last one cut
         // splits a fresh copy instead.
-        if (j > 0 && std::sqrt(std::max(0.0, t2)) - std::sqrt(std::max(0.0, levels[j - 1])) < 1e-5) copy = m;
-        const size_t nfaces = copy.faces().size();
-        for (size_t f = 1; f < nfaces; ++f) {
-            const DomainMesh::Face& F = copy.faces()[f];
-            if (!F.alive || F.infinite) continue;
-            const Quadratic2 P = F.poly;
-            const Box2 b = copy.cached_face_box((int)f);
-            const Interval r = convex_range(P, b);
-            if (r.hi <= t2) continue;                                   // wholly at or below t
-            if (r.lo > t2) { out[j] += face_area_exact(copy, (int)f).value; continue; }
-            Quadratic2 g = P;
-            g.f -= t2;
-            for (const DomainMesh::SplitPiece& piece : copy.split_face((int)f, g))
-                if (piece.sign > 0) out[j] += face_area_exact(copy, piece.face).value;
+        if (!copy || t - last_cut < 1e-6) {
+            copy = std::make_unique<DomainMesh>(pristine);
+            area.assign(copy->faces().size(), NAN);
+        }
+        last_cut = t;
+    }
+    double sum = 0;
+    const size_t nfaces = mesh().faces().size();
+    for (size_t f = 1; f < nfaces; ++f) {
+        const DomainMesh::Face& F = mesh().faces()[f];
+        if (!F.alive || F.infinite) continue;
+        const Interval r = convex_range(F.poly, mesh().face_box((int)f));
+        if (r.hi <= t2) continue;                                   // wholly at or below t
+        if (r.lo > t2) { sum += face_area((int)f); continue; }
+        Quadratic2 g = F.poly;
+        g.f -= t2;
+        for (const DomainMesh::SplitPiece& piece : copy->split_face((int)f, g)) {
+            if ((size_t)piece.face < area.size()) area[piece.face] = NAN;  // a changed face
+            if (piece.sign > 0) sum += face_area(piece.face);
         }
     }
+    return sum;
+}
+}  // namespace
+
+std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels) {
+    std::vector<double> out(levels.size(), 0.0);
+    LevelClipper clip(m);
+    for (size_t j = 0; j < levels.size(); ++j) out[j] = clip.above(levels[j]);
     return out;
 }
 

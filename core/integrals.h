@@ -58,8 +58,9 @@ struct DomainIntegrals {
 DomainIntegrals domain_integrals(const DomainMesh& m);
 
 // Area (frame units) of the part of the target where d^2 > t2, for each t2 of `levels`
-// (ascending), by splitting one copy of the mesh by P - t2 level after level (a fresh copy for a
-// level within 1e-5 of the previous one, so no band between levels is near the snap tolerance).
+// (ascending), by splitting one copy of the mesh by P - t2 level after level (no copy while no
+// face straddles the level; a fresh copy for a level within 1e-6 of the last one that cut, so no
+// band between levels is near the snap tolerance).
 std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels);
 
 // Bounds of a convex quadratic (every d^2 is one) over a box: its exact range there, widened by

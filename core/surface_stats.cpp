@@ -1,6 +1,6 @@
 // Surface statistics of the distance field (issue 9; Straub 2007 §5, "future work"): every
 // target's full domain mesh integrated (integrals.h), percentiles by bisection on the exact area
-// above t (surface_stats.h describes the two passes).
+// above t (surface_stats.h describes the passes).
 #include "surface_stats.h"
 
 #include <algorithm>
@@ -122,7 +122,7 @@ struct MeshCache {
     std::vector<std::unique_ptr<DomainMesh>> mesh;
     std::vector<double> scale;
     std::atomic<size_t> bytes{0};
-    size_t budget = size_t(256) << 20;
+    size_t budget = size_t(1) << 30;
     explicit MeshCache(size_t n) : mesh(n), scale(n) {}
     static size_t size_of(const DomainMesh& m) {  // an estimate, twice the main arrays
         return 2 * (m.edges().size() * sizeof(DomainMesh::Edge) + m.half_edges().size() * sizeof(DomainMesh::HalfEdge) +
@@ -152,7 +152,7 @@ void refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPa
         if (b.done) continue;
         for (int j = 1; j <= k; ++j) levels.push_back(b.lo + (b.hi - b.lo) * j / (k + 1));
         const double guess = b.alo > b.ahi ? b.lo + (b.hi - b.lo) * (b.alo - b.goal) / (b.alo - b.ahi) : 0.5 * (b.lo + b.hi);
-        for (double step = 0.5 * width; step < b.hi - b.lo; step *= 16)
+        for (double step = 0.5 * width; step < b.hi - b.lo; step *= 4)
             for (double t : {guess - step, guess + step})
                 if (t > b.lo && t < b.hi) levels.push_back(t);
     }
@@ -197,7 +197,7 @@ void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>&
         if (rerun.empty() || (opt.cancel && opt.cancel->load())) break;
         out.rerun_targets += rerun.size();
         ++out.percentile_passes;
-        refine_brackets(grid, side, pass, br, rerun, 1, out.percentile_tolerance, opt, cache);
+        refine_brackets(grid, side, pass, br, rerun, 3, out.percentile_tolerance, opt, cache);
     }
     out.cancelled = opt.cancel && opt.cancel->load();
     for (const Bracket& b : br) out.percentiles.push_back(b.hi);

@@ -6,8 +6,10 @@
 // (target_solver.h, never stopped early, as target_maxima.h runs it), and its finished domain
 // mesh is integrated (integrals.h). Percentiles are found by bisection on the exact area above t:
 // a first pass measures that area at fixed probe levels, which brackets each percentile between
-// two probes; a second pass re-runs only the targets whose distance range meets a bracket, keeps
-// their domain meshes, and bisects to 1e-9 of the bounding-box diagonal.
+// two probes; further passes over only the targets whose distance range meets a bracket clip them
+// at a few levels inside it (evenly spaced, and a ladder around the secant guess), until every
+// bracket is narrower than 1e-9 of the bounding-box diagonal. Domain meshes are kept between the
+// passes up to a memory budget (about 1 GB); the others are rebuilt.
 //
 // Sliver targets (height below 1e-7 of their longest edge, handled as their edges by the solver)
 // have no domain mesh: they are left out of the integrals and reported (sliver_targets,
