@@ -109,6 +109,36 @@ TEST(Integrals, GaussLegendreIsExactForPolynomials) {
     }
 }
 
+// convex_range: contains every value on the box and is attained (to rounding) by some sample:
+// checked against a dense grid of samples, for random convex quadratics (|p - c|^2-like, ranks 1, 2).
+TEST(Integrals, ConvexRangeIsTheRangeOverTheBox) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-1, 1);
+    for (int k = 0; k < 200; ++k) {
+        const Vec2 n{U(rng), U(rng)}, c{U(rng), U(rng)};
+        Quadratic2 P;  // (n.(p - c))^2 + s |p - c|^2 + h: a face, edge or vertex region's kind
+        const double s = k % 3 == 0 ? 0.0 : std::fabs(U(rng)), h = k % 2 ? 0.0 : std::fabs(U(rng));
+        P.a = n.x * n.x + s; P.b = n.x * n.y; P.c = n.y * n.y + s;
+        P.d = -(P.a * c.x + P.b * c.y); P.e = -(P.b * c.x + P.c * c.y);
+        P.f = P.a * c.x * c.x + 2 * P.b * c.x * c.y + P.c * c.y * c.y + h;
+        Box2 b;
+        b.add({U(rng), U(rng)});
+        b.add({U(rng), U(rng)});
+        const Interval r = convex_range(P, b);
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (int i = 0; i <= 200; ++i)
+            for (int j = 0; j <= 200; ++j) {
+                const double v = P({b.lo.x + (b.hi.x - b.lo.x) * i / 200, b.lo.y + (b.hi.y - b.lo.y) * j / 200});
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+        EXPECT_LE(r.lo, lo) << k;
+        EXPECT_GE(r.hi, hi) << k;
+        EXPECT_NEAR(r.hi, hi, 1e-11 * (1 + hi)) << k;            // the corners are samples (and a rounding margin)
+        EXPECT_LT(lo - r.lo, 1e-3 * (1 + hi - lo)) << k;         // the grid is within 1e-3 of the minimum
+    }
+}
+
 // ---------------------------------------------------------------- hand configurations, whole meshes
 
 // A big plane z = 0 (two triangles) under one tilted triangle with heights z1, z2, z3 at its corners:
