@@ -1,6 +1,7 @@
 // hlens-cli: the command-line front end of Hausdorff Lens.
 //
-//   hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld]
+//   hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld] [--verify]
+//                          [--units NAME] [--stats] [--histogram N] [--tolerance T] [--export-errors PATH.ply]
 //   hlens-cli trace A B --target I [--json] [--no-weld]
 //   hlens-cli batch REFERENCE FILE... [--json] [--tolerance T] [--jobs N] [--units NAME] ...
 //   hlens-cli --help | help
@@ -9,7 +10,7 @@
 // target triangle of A with core/target_solver.h and prints every event as it happens, one per line.
 // `batch` compares one reference against many files (app/batch.h), one result line per pair.
 // Exit codes: 0 success, 2 bad usage or bad input (one line "hlens-cli: <message>" on stderr),
-// 3 --verify disagreement, 4 a batch pair beyond --tolerance, 1 anything unexpected.
+// 3 --verify disagreement, 4 not within --tolerance (batch: a pair beyond it), 1 anything unexpected.
 #include <unistd.h>
 
 #include <algorithm>
@@ -34,6 +35,7 @@
 #include "mesh.h"
 #include "mesh_io.h"
 #include "report.h"
+#include "surface_stats.h"
 #include "target_solver.h"
 #include "voxel_grid.h"
 
@@ -44,7 +46,7 @@ namespace {
 const char* kUsage =
     "usage:\n"
     "  hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld] [--verify]\n"
-    "                     [--units NAME]\n"
+    "                     [--units NAME] [--stats] [--histogram N] [--tolerance T] [--export-errors PATH.ply]\n"
     "  hlens-cli trace A B --target I [--json] [--no-weld]\n"
     "  hlens-cli batch REFERENCE FILE... [--json] [--tolerance T] [--jobs N] [--one-sided] [--mode paper|fast]\n"
     "                     [--threads N] [--no-weld] [--units NAME]\n"
@@ -63,6 +65,15 @@ const char* kUsage =
     "                exact value lies in the bracket (exit code 3 if it does not)\n"
     "  --units NAME  a unit label, passed through to the output (\"units\"); \"relative\" values are\n"
     "                divided by the diagonal of the bounding box of both meshes together\n"
+    "  --stats       exact surface statistics per direction: area, mean and RMS distance, the 50/90/95/99th\n"
+    "                area-weighted percentiles (the full construction of every triangle: slower)\n"
+    "  --histogram N with --stats: the area per distance bin, N bins from 0 to the largest distance\n"
+    "  --tolerance T within_tolerance: is the distance at most T? (exit code 4 if not); with --stats also\n"
+    "                the area and fraction of each surface farther than T; without, the run stops as soon\n"
+    "                as a vertex farther than T is found\n"
+    "  --export-errors PATH.ply  the measured mesh with its error map (per-face max/mean/RMS distance,\n"
+    "                per-vertex distance, as PLY 'quality'): PATH-ab.ply and PATH-ba.ply, or PATH.ply\n"
+    "                with --one-sided\n"
     "\n"
     "trace      run target triangle I of A against B and print every event of the solver as it\n"
     "           happens (one line each), then a final summary line\n"
@@ -71,14 +82,17 @@ const char* kUsage =
     "\n"
     "batch      compare REFERENCE (as A) with each FILE (as B), printing one line per pair as it\n"
     "           finishes (a file that fails gets a line with its error; the others go on), then a\n"
-    "           summary line; the options of distance apply to every pair, and\n"
+    "           summary line; --json, --one-sided, --mode, --threads, --no-weld and --units of distance\n"
+    "           apply to every pair, and\n"
     "  --tolerance T exit code 4 if the Hausdorff distance (h(A,B) with --one-sided) of a pair exceeds T\n"
+    "                (\"exceeds\" in its line; every pair is computed in full)\n"
     "  --jobs N      compare N pairs at the same time (default 1); --threads is then per pair\n"
     "                (default: all cores divided by N)\n"
     "\n"
     "formats: .obj .ply .stl .off .gltf .glb\n"
     "exit codes: 0 success, 2 bad usage or bad input (batch: a file failed), 3 --verify found a\n"
-    "disagreement, 4 a batch pair exceeds --tolerance (2 wins over 4), 1 unexpected error\n";
+    "            disagreement, 4 not within --tolerance (batch: a pair exceeds it; 2 wins over 4),\n"
+    "            1 unexpected error\n";
 
 // Bad usage or bad input: exit code 2.
 struct UsageError : std::runtime_error {
@@ -96,10 +110,13 @@ struct Args {
     std::string command;
     std::vector<std::string> files;
     bool json = false, one_sided = false, weld = true, verify = false;
+    bool stats = false;                  // distance: --stats, --histogram, --export-errors (issue 9)
+    int histogram = 0;
+    std::string export_errors;
     Mode mode = Mode::Fast;
     int threads = 0;          // 0: all cores
     int jobs = 1;             // batch: pairs at a time
-    double tolerance = -1;    // batch: < 0 when not given
+    double tolerance = -1;    // < 0 when not given (distance: the verdict; batch: per pair)
     std::string units;
     long long target = -1;
     bool has_target = false;
@@ -119,8 +136,30 @@ double parse_number(const std::string& option, const std::string& text) {
     errno = 0;
     char* end = nullptr;
     double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || errno == ERANGE) throw UsageError(option + " needs a number, got '" + text + "'");
+    if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+        throw UsageError(option + " needs a number, got '" + text + "'");
     return v;
+}
+
+// The options of issue 9 that only distance takes (statistics, error map); true if `w` is one of them.
+template <class TakeValue>
+bool parse_stats_option(Args& a, const std::string& w, bool has_value, TakeValue& take_value) {
+    if (w == "--stats") {
+        if (has_value) throw UsageError("--stats takes no value");
+        a.stats = true;
+    } else if (w == "--histogram") {
+        long long n = parse_integer("--histogram", take_value());
+        if (n < 1 || n > 100000) throw UsageError("--histogram must be between 1 and 100000, got " + std::to_string(n));
+        a.histogram = (int)n;
+    } else if (w == "--export-errors") {
+        a.export_errors = take_value();
+        const std::string& e = a.export_errors;
+        if (e.size() < 5 || (e.substr(e.size() - 4) != ".ply" && e.substr(e.size() - 4) != ".PLY"))
+            throw UsageError("--export-errors needs a path ending in .ply, got '" + e + "'");
+    } else {
+        return false;
+    }
+    return true;
 }
 
 Args parse_args(int argc, char** argv) {
@@ -166,14 +205,14 @@ Args parse_args(int argc, char** argv) {
             a.threads = (int)n;
         } else if (distance && w == "--units") {
             a.units = take_value();
-        } else if (batch && w == "--tolerance") {
+        } else if (distance && w == "--tolerance") {
             a.tolerance = parse_number("--tolerance", take_value());
-            if (!(a.tolerance >= 0) || !std::isfinite(a.tolerance))
-                throw UsageError("--tolerance must be a finite number >= 0");
+            if (a.tolerance < 0) throw UsageError("--tolerance must be >= 0, got " + format_double(a.tolerance, 17));
         } else if (batch && w == "--jobs") {
             long long n = parse_integer("--jobs", take_value());
             if (n < 1 || n > 4096) throw UsageError("--jobs must be between 1 and 4096, got " + std::to_string(n));
             a.jobs = (int)n;
+        } else if (distance && !batch && parse_stats_option(a, w, has_value, take_value)) {
         } else if (!distance && w == "--target") {
             a.target = parse_integer("--target", take_value());
             a.has_target = true;
@@ -193,6 +232,7 @@ Args parse_args(int argc, char** argv) {
         throw UsageError(a.command + " needs two mesh files, got " + std::to_string(a.files.size()) +
                          " (see hlens-cli --help)");
     if (!distance && !a.has_target) throw UsageError("trace needs --target I");
+    if (a.histogram > 0 && !a.stats) throw UsageError("--histogram needs --stats");
     return a;
 }
 
@@ -267,7 +307,98 @@ DistanceReportOptions report_options(const Args& args, int threads) {
     o.threads = threads;
     o.units = args.units;
     o.tolerance = args.tolerance;
+    o.verdict = args.command == "distance";
     return o;
+}
+
+// ---------------------------------------------------------------- statistics (issue 9)
+
+// Exact surface statistics per direction (core/surface_stats.h), when --stats or --export-errors
+// asks for them; empty otherwise.
+std::vector<SurfaceStats> direction_stats(const Args& args, const TriangleMesh& A, const TriangleMesh& B,
+                                          const HausdorffResult& r) {
+    std::vector<SurfaceStats> out;
+    if (!args.stats && args.export_errors.empty()) return out;
+    VoxelGrid grid(A, B);
+    for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
+        StatsOptions o;
+        o.threads = args.threads;
+        o.histogram_bins = args.histogram;
+        o.tolerance = args.stats ? args.tolerance : -1;
+        if (!args.stats) o.percentiles.clear();  // the error map needs no percentiles
+        o.known_max = (side == 0 ? r.a_to_b : r.b_to_a).distance;
+        out.push_back(surface_stats(grid, side, o));
+    }
+    return out;
+}
+
+void print_stats(const Args& args, const std::vector<SurfaceStats>& stats, size_t i) {
+    if (!args.stats || i >= stats.size()) return;
+    const SurfaceStats& s = stats[i];
+    std::printf("   area %s, mean %s, RMS %s\n", g(s.area, 10).c_str(), g(s.mean(), 10).c_str(), g(s.rms(), 10).c_str());
+    std::printf("   percentiles (by area):");
+    const char* names[] = {"50", "90", "95", "99"};
+    for (size_t k = 0; k < s.percentiles.size() && k < 4; ++k) std::printf(" %s%% %s", names[k], g(s.percentiles[k], 10).c_str());
+    std::printf("\n");
+    if (args.tolerance >= 0)
+        std::printf("   farther than %s: area %s (%s%%)\n", g(args.tolerance, 10).c_str(), g(s.area_above, 10).c_str(),
+                    g(100 * s.fraction_above, 6).c_str());
+    for (size_t k = 0; k < s.histogram_area.size(); ++k)
+        std::printf("   [%s, %s]: area %s\n", g(s.histogram_edges[k], 8).c_str(), g(s.histogram_edges[k + 1], 8).c_str(),
+                    g(s.histogram_area[k], 8).c_str());
+    if (s.sliver_targets)
+        std::printf("   %zu sliver triangles (area %s) left out of the statistics\n", s.sliver_targets, g(s.sliver_area, 6).c_str());
+}
+
+// The error map of one direction as PLY: every vertex with its distance, every face with its
+// max, mean and RMS distance; "quality" (max on faces) is the scalar field MeshLab reads.
+void write_error_ply(const std::string& path, const TriangleMesh& M, const SurfaceStats& s) {
+    FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) throw UsageError("cannot write " + path + ": " + std::strerror(errno));
+    std::fprintf(f, "ply\nformat ascii 1.0\ncomment hlens-cli error map: distance from this mesh to the other\n");
+    std::fprintf(f, "element vertex %zu\nproperty double x\nproperty double y\nproperty double z\nproperty float quality\n"
+                 "property double distance\n", M.positions.size());
+    std::fprintf(f, "element face %zu\nproperty list uchar int vertex_indices\nproperty float quality\n"
+                 "property double max_distance\nproperty double mean_distance\nproperty double rms_distance\nend_header\n",
+                 M.num_triangles());
+    for (size_t v = 0; v < M.positions.size(); ++v) {
+        const double d = std::max(0.0, s.vertex_distance[v]);  // a vertex no triangle uses: 0
+        std::fprintf(f, "%.17g %.17g %.17g %.9g %.17g\n", M.positions[v].x, M.positions[v].y, M.positions[v].z, d, d);
+    }
+    for (size_t t = 0; t < M.num_triangles(); ++t) {
+        const TriangleStats& ts = s.triangles[t];
+        std::fprintf(f, "3 %u %u %u %.9g %.17g %.17g %.17g\n", M.triangles[t][0], M.triangles[t][1], M.triangles[t][2], ts.max,
+                     ts.max, ts.mean(), ts.rms());
+    }
+    if (std::fclose(f) != 0) throw UsageError("cannot write " + path);
+}
+
+void export_errors(const Args& args, const TriangleMesh& A, const TriangleMesh& B, const std::vector<SurfaceStats>& stats) {
+    if (args.export_errors.empty()) return;
+    if (args.one_sided) { write_error_ply(args.export_errors, A, stats[0]); return; }
+    const std::string stem = args.export_errors.substr(0, args.export_errors.size() - 4);
+    write_error_ply(stem + "-ab.ply", A, stats[0]);
+    write_error_ply(stem + "-ba.ply", B, stats[1]);
+}
+
+// --tolerance without --stats: a verdict. A vertex farther than T (exact point-mesh distance)
+// proves h > T at once: report it and stop (-1: no such vertex, run the whole computation).
+int early_tolerance_verdict(const Args& args, const TriangleMesh& A, const TriangleMesh& B) {
+    VoxelGrid grid(A, B);
+    for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
+        const SampledBound sb = sampled_lower_bound(side == 0 ? A : B, grid, side, 1);
+        if (!(sb.value > args.tolerance)) continue;
+        if (args.json) {
+            print_line(to_json(stopped_early_json(A, B, side, sb, report_options(args, 1))));
+        } else {
+            std::printf("NOT within tolerance %s: the vertex %s of %s (triangle %u) is at distance %s from %s,\n"
+                        "so %s >= %s (stopped early, without computing the distance)\n",
+                        g(args.tolerance).c_str(), point_text(sb.point).c_str(), side == 0 ? "A" : "B", sb.triangle,
+                        g(sb.value).c_str(), side == 0 ? "B" : "A", side == 0 ? "h(A,B)" : "h(B,A)", g(sb.value).c_str());
+        }
+        return 4;
+    }
+    return -1;
 }
 
 int run_distance(const Args& args) {
@@ -275,6 +406,10 @@ int run_distance(const Args& args) {
     lo.weld = args.weld;
     TriangleMesh A = load_mesh(args.files[0], lo);
     TriangleMesh B = load_mesh(args.files[1], lo);
+    if (args.tolerance >= 0 && !args.stats && args.export_errors.empty()) {
+        const int code = early_tolerance_verdict(args, A, B);
+        if (code >= 0) return code;
+    }
 
     HausdorffOptions opt;
     opt.mode = args.mode;
@@ -306,9 +441,15 @@ int run_distance(const Args& args) {
         }
     }
     const bool verified = std::all_of(checks.begin(), checks.end(), [](const Check& c) { return c.ok; });
+    const std::vector<SurfaceStats> stats = direction_stats(args, A, B, r);
+    export_errors(args, A, B, stats);
+    const bool within = args.tolerance < 0 || reported_distance(r, args.one_sided) <= args.tolerance;
+    const int code = !verified ? 3 : within ? 0 : 4;
 
     if (args.json) {
-        Value v = distance_json(A, B, r, report_options(args, threads));
+        DistanceReportOptions ro = report_options(args, threads);
+        if (args.stats) ro.stats = &stats;
+        Value v = distance_json(A, B, r, ro);
         for (size_t i = 0; i < checks.size(); ++i)
             find_field(v, i == 0 ? "a_to_b" : "b_to_a")
                 ->add("verify", Value::object()
@@ -316,15 +457,17 @@ int run_distance(const Args& args) {
                                     .add("upper", Value::number(checks[i].bound.upper))
                                     .add("ok", Value::boolean(checks[i].ok)));
         print_line(to_json(v));
-        return verified ? 0 : 3;
+        return code;
     }
     print_mesh_summary("A", A);
     print_mesh_summary("B", B);
     std::printf("\n");
     print_one_sided("h(A,B)", "A", "B", r.a_to_b, A.num_triangles(), diagonal);
+    print_stats(args, stats, 0);
     if (!args.one_sided) {
         std::printf("\n");
         print_one_sided("h(B,A)", "B", "A", r.b_to_a, B.num_triangles(), diagonal);
+        print_stats(args, stats, 1);
         std::printf("\nHausdorff distance = %s%s\n", g(r.hausdorff).c_str(), relative_text(r.hausdorff, diagonal).c_str());
     }
     std::printf("\nbounding-box diagonal (both meshes) %s%s%s\n", g(diagonal).c_str(), args.units.empty() ? "" : " ",
@@ -333,7 +476,9 @@ int run_distance(const Args& args) {
     for (size_t i = 0; i < checks.size(); ++i)
         std::printf("verify %s: Lipschitz bracket [%s, %s] %s\n", i == 0 ? "h(A,B)" : "h(B,A)", g(checks[i].bound.lower).c_str(),
                     g(checks[i].bound.upper).c_str(), checks[i].ok ? "holds the exact value" : "DOES NOT hold the exact value");
-    return verified ? 0 : 3;
+    if (args.tolerance >= 0)
+        std::printf("%s tolerance %s\n", within ? "within" : "NOT within", g(args.tolerance).c_str());
+    return code;
 }
 
 int run_trace(const Args& args) {

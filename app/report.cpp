@@ -47,13 +47,49 @@ Value one_sided_json(const OneSidedResult& r, double diagonal) {
         .add("seconds", Value::number(r.seconds));
 }
 
+static Value numbers_json(const std::vector<double>& v) {
+    Value a = Value::array();
+    for (double x : v) a.push(Value::number(x));
+    return a;
+}
+
+void add_stats_json(Value& v, const SurfaceStats& s, double tolerance) {
+    Value pct = Value::object();
+    const char* names[] = {"50", "90", "95", "99"};
+    for (size_t k = 0; k < s.percentiles.size() && k < 4; ++k) pct.add(names[k], Value::number(s.percentiles[k]));
+    v.add("area", Value::number(s.area)).add("mean", Value::number(s.mean())).add("rms", Value::number(s.rms()))
+        .add("percentiles", pct);
+    if (!s.histogram_area.empty())
+        v.add("histogram", Value::object().add("edges", numbers_json(s.histogram_edges)).add("area", numbers_json(s.histogram_area)));
+    if (tolerance >= 0)
+        v.add("area_above", Value::number(s.area_above)).add("fraction_above", Value::number(s.fraction_above));
+    v.add("stats_error", Value::object()
+                             .add("area", Value::number(s.err_area))
+                             .add("integral_d2", Value::number(s.err_d2))
+                             .add("integral_d_estimate", Value::number(s.err_d))
+                             .add("percentile", Value::number(s.percentile_tolerance)));
+    v.add("stats_seconds", Value::object()
+                               .add("first_pass", Value::number(s.seconds_first_pass))
+                               .add("percentiles", Value::number(s.seconds_percentiles))
+                               .add("percentile_passes", Value::integer(s.percentile_passes))
+                               .add("rerun_targets", Value::integer((long long)s.rerun_targets)));
+    if (s.sliver_targets) v.add("sliver_triangles", Value::integer((long long)s.sliver_targets)).add("sliver_area", Value::number(s.sliver_area));
+}
+
+// One direction's object, with its statistics when there are any.
+static Value direction_json(const OneSidedResult& r, double diagonal, const DistanceReportOptions& opt, size_t side) {
+    Value v = one_sided_json(r, diagonal);
+    if (opt.stats && side < opt.stats->size()) add_stats_json(v, (*opt.stats)[side], opt.tolerance);
+    return v;
+}
+
 Value distance_json(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
                     const DistanceReportOptions& opt) {
     const double diag = report_diagonal(A, B);
     Value v = Value::object();
-    v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("a_to_b", one_sided_json(r.a_to_b, diag));
+    v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("a_to_b", direction_json(r.a_to_b, diag, opt, 0));
     if (!opt.one_sided)
-        v.add("b_to_a", one_sided_json(r.b_to_a, diag))
+        v.add("b_to_a", direction_json(r.b_to_a, diag, opt, 1))
             .add("hausdorff", Value::number(r.hausdorff))
             .add("relative", relative(r.hausdorff, diag));
     v.add("seconds", Value::number(r.seconds))
@@ -61,9 +97,28 @@ Value distance_json(const TriangleMesh& A, const TriangleMesh& B, const Hausdorf
         .add("threads", Value::integer(opt.threads))
         .add("diagonal", Value::number(diag));
     if (!opt.units.empty()) v.add("units", Value::string(opt.units));
-    if (opt.tolerance >= 0)
-        v.add("tolerance", Value::number(opt.tolerance))
-            .add("exceeds", Value::boolean(reported_distance(r, opt.one_sided) > opt.tolerance));
+    if (opt.tolerance >= 0) {
+        const double d = reported_distance(r, opt.one_sided);
+        v.add("tolerance", Value::number(opt.tolerance));
+        if (!opt.verdict) {
+            v.add("exceeds", Value::boolean(d > opt.tolerance));
+        } else {
+            v.add("within_tolerance", Value::boolean(d <= opt.tolerance));
+            if (!opt.stats) v.add("stopped_early", Value::boolean(false));
+        }
+    }
+    return v;
+}
+
+Value stopped_early_json(const TriangleMesh& A, const TriangleMesh& B, int side, const SampledBound& sb,
+                         const DistanceReportOptions& opt) {
+    Value v = Value::object();
+    v.add("a", mesh_json(A)).add("b", mesh_json(B)).add("tolerance", Value::number(opt.tolerance))
+        .add("within_tolerance", Value::boolean(false)).add("stopped_early", Value::boolean(true))
+        .add("direction", Value::string(side == 0 ? "a_to_b" : "b_to_a")).add("point", vec3(sb.point))
+        .add("triangle", Value::integer(sb.triangle)).add("lower", Value::number(sb.value))
+        .add("diagonal", Value::number(report_diagonal(A, B)));
+    if (!opt.units.empty()) v.add("units", Value::string(opt.units));
     return v;
 }
 

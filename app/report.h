@@ -4,10 +4,13 @@
 // fields and the numbers of the CLI and of Python identical.
 #pragma once
 #include <string>
+#include <vector>
 
+#include "bounds.h"
 #include "hausdorff.h"
 #include "json_value.h"
 #include "mesh.h"
+#include "surface_stats.h"
 #include "target_solver.h"
 
 namespace hlens {
@@ -19,6 +22,12 @@ struct DistanceReportOptions {
     int threads = 1;          // the worker threads actually used
     std::string units;        // a label passed through as "units" (left out when empty)
     double tolerance = -1;    // >= 0: add "tolerance" and "exceeds" (the reported distance > tolerance)
+    // hlens-cli distance --tolerance: the verdict "within_tolerance" in place of "exceeds", and
+    // without statistics "stopped_early": false (stopped_early_json is the early stop)
+    bool verdict = false;
+    // --stats: the exact surface statistics per direction (a_to_b, then b_to_a), added to that
+    // direction's object (add_stats_json); null: none
+    const std::vector<SurfaceStats>* stats = nullptr;
 };
 
 // The diagonal that "relative" values divide by: of the union of both meshes' bounding boxes (as
@@ -31,9 +40,18 @@ double reported_distance(const HausdorffResult& r, bool one_sided);
 Value mesh_json(const TriangleMesh& m);
 Value one_sided_json(const OneSidedResult& r, double diagonal);
 // {"a", "b", "a_to_b", ["b_to_a", "hausdorff", "relative"], "seconds", "mode", "threads",
-//  "diagonal", ["units"], ["tolerance", "exceeds"]}
+//  "diagonal", ["units"], ["tolerance", "exceeds" | "within_tolerance", ["stopped_early"]]}
 Value distance_json(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
                     const DistanceReportOptions& opt);
+// The fields --stats adds to one direction's object: area, mean, rms, percentiles, [histogram],
+// [area_above, fraction_above] (with a tolerance), stats_error, stats_seconds, [sliver_*].
+void add_stats_json(Value& direction, const SurfaceStats& s, double tolerance);
+// hlens-cli distance --tolerance without --stats, stopped at once by `sb`, a vertex of mesh `side`
+// (0: A, 1: B) farther than the tolerance from the other mesh: {"a", "b", "tolerance",
+// "within_tolerance": false, "stopped_early": true, "direction", "point", "triangle", "lower",
+// "diagonal", ["units"]}.
+Value stopped_early_json(const TriangleMesh& A, const TriangleMesh& B, int side, const SampledBound& sb,
+                         const DistanceReportOptions& opt);
 
 // One event of target `target` with the fields meaningful for its kind. Every event has event,
 // step, insertion (sources inserted so far) and radius (the search radius then, null while infinite).

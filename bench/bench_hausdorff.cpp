@@ -13,14 +13,16 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "hausdorff.h"
-#include "target_solver.h"
 #include "mesh_io.h"
+#include "surface_stats.h"
+#include "target_solver.h"
 
 using namespace hlens;
 
@@ -141,6 +143,60 @@ void register_pair(const std::string& name, const std::string& file) {
     }
 }
 
+// ---- exact surface statistics (issue 9): bunny against its 10% simplification, both directions.
+// The simplified copy is made by bench/make_pairs.cpp (OpenMesh's quadric decimater):
+//   hlens_make_pairs simplify ../shared/meshes/bunny.ply PAIRS/bunny-10.ply 0.1
+// with PAIRS from $HLENS_BENCH_PAIRS (default: the current directory). Three runs of the same pair:
+// the plain distance (fast mode), paper mode (every target's full construction, what the
+// statistics need) and the statistics (percentiles, a 10-bin histogram and a tolerance).
+const Pair* simplified_bunny() {
+    static std::unique_ptr<Pair> p;
+    static bool tried = false;
+    if (tried) return p.get();
+    tried = true;
+    const char* dir = std::getenv("HLENS_BENCH_PAIRS");
+    try {
+        TriangleMesh a = load_mesh(kShared + "/bunny.ply");
+        TriangleMesh b = load_mesh(std::string(dir ? dir : ".") + "/bunny-10.ply");
+        p = std::make_unique<Pair>(Pair{std::move(a), std::move(b)});
+    } catch (const MeshError&) {
+        p = nullptr;
+    }
+    return p.get();
+}
+
+void bench_stats(benchmark::State& state, int what) {  // 0 plain (fast), 1 paper, 2 statistics
+    const Pair* p = simplified_bunny();
+    if (!p) {
+        state.SkipWithError("bunny-10.ply not found: run hlens_make_pairs simplify (see bench_hausdorff.cpp)");
+        return;
+    }
+    reset_peak_memory();
+    double mean_ab = 0, mean_ba = 0;
+    for (auto _ : state) {
+        if (what < 2) {
+            HausdorffOptions opt;
+            opt.mode = what == 0 ? Mode::Fast : Mode::Paper;
+            benchmark::DoNotOptimize(hausdorff(p->a, p->b, opt).hausdorff);
+            continue;
+        }
+        const HausdorffResult r = hausdorff(p->a, p->b);
+        VoxelGrid grid(p->a, p->b);
+        for (int side = 0; side < 2; ++side) {
+            StatsOptions o;
+            o.histogram_bins = 10;
+            o.known_max = (side == 0 ? r.a_to_b : r.b_to_a).distance;
+            o.tolerance = 0.5 * o.known_max;
+            (side == 0 ? mean_ab : mean_ba) = surface_stats(grid, side, o).mean();
+        }
+    }
+    state.counters["peak_MB"] = peak_memory_mb();
+    if (what == 2) {
+        state.counters["mean_ab"] = mean_ab;
+        state.counters["mean_ba"] = mean_ba;
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -148,6 +204,12 @@ int main(int argc, char** argv) {
     register_pair("nefertiti", "nefertiti.obj");
     benchmark::RegisterBenchmark("observer/none", [](benchmark::State& s) { bench_observer(s, false); })->Unit(benchmark::kMillisecond)->MinTime(2.0);
     benchmark::RegisterBenchmark("observer/counting", [](benchmark::State& s) { bench_observer(s, true); })->Unit(benchmark::kMillisecond)->MinTime(2.0);
+    const char* stats_names[] = {"stats/bunny-10/plain", "stats/bunny-10/paper", "stats/bunny-10/stats"};
+    for (int what = 0; what < 3; ++what)
+        benchmark::RegisterBenchmark(stats_names[what], [what](benchmark::State& s) { bench_stats(s, what); })
+            ->UseRealTime()
+            ->Unit(benchmark::kSecond)
+            ->Iterations(1);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

@@ -632,3 +632,220 @@ TEST_F(Cli, VerifyBracketsTheExactValue) {
     EXPECT_EQ(r.code, 0);
     EXPECT_NE(r.out.find("holds the exact value"), std::string::npos) << r.out;
 }
+
+// ---------------------------------------------------------------- statistics, tolerance, error map (issue 9)
+
+namespace {
+
+// One tilted triangle over a big plane z = 0: d = z, linear, with heights 0.2, 0.5, 0.9 at the corners
+// (hand formulas: mean = centroid height, mean of z^2 = (sum z_i^2 + sum z_i z_j) / 6).
+const char* kTilted = "v 0.1 0.2 0.2\nv 1.3 0.5 0.5\nv 0.4 1.1 0.9\nf 1 2 3\n";
+const char* kPlane = "v -5 -5 0\nv 5 -5 0\nv 5 5 0\nv -5 5 0\nf 1 2 3\nf 1 3 4\n";
+const double kZ[3] = {0.2, 0.5, 0.9};
+double tilted_area() {
+    const double ux = 1.2, uy = 0.3, uz = 0.3, vx = 0.3, vy = 0.9, vz = 0.7;  // edges from the first corner
+    const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+    return 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+}
+double tilted_above(double t) {  // area where z > t (z linear over the triangle)
+    const double A = tilted_area(), a = kZ[0], b = kZ[1], c = kZ[2];
+    if (t <= a) return A;
+    if (t >= c) return 0;
+    if (t >= b) return A * (c - t) * (c - t) / ((c - a) * (c - b));
+    return A * (1 - (t - a) * (t - a) / ((c - a) * (b - a)));
+}
+
+std::string format_number(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+// A tiny reader for the ASCII PLY the tool writes: the header's property names per element, and
+// the rows of numbers.
+struct Ply {
+    std::vector<std::string> vertex_props, face_props;
+    std::vector<std::vector<double>> vertices, faces;
+};
+Ply read_ply(const std::string& text) {
+    Ply p;
+    std::istringstream in(text);
+    std::string line, element;
+    size_t nv = 0, nf = 0;
+    while (std::getline(in, line) && line != "end_header") {
+        std::istringstream l(line);
+        std::string w;
+        l >> w;
+        if (w == "element") { l >> element; (element == "vertex" ? nv : nf) = 0; size_t n; l >> n; (element == "vertex" ? nv : nf) = n; }
+        if (w == "property") {
+            std::string type, name;
+            l >> type;
+            if (type == "list") { std::string a, b; l >> a >> b; }
+            l >> name;
+            (element == "vertex" ? p.vertex_props : p.face_props).push_back(type + " " + name);
+        }
+    }
+    auto rows = [&](size_t n, std::vector<std::vector<double>>& out) {
+        for (size_t i = 0; i < n && std::getline(in, line); ++i) {
+            std::istringstream l(line);
+            std::vector<double> row;
+            for (double x; l >> x;) row.push_back(x);
+            out.push_back(row);
+        }
+    };
+    rows(nv, p.vertices);
+    rows(nf, p.faces);
+    return p;
+}
+
+}  // namespace
+
+TEST_F(Cli, StatsOfATiltedTriangleOverAPlane) {
+    std::string a = write("tilt.obj", kTilted), b = write("plane.obj", kPlane);
+    Outcome r = run({"distance", a, b, "--json", "--one-sided", "--stats", "--histogram", "3", "--tolerance", "0.6"});
+    EXPECT_EQ(r.code, 4) << r.err;  // not within 0.6: the distance is 0.9
+    ASSERT_TRUE(is_json_object(r.out)) << r.out;
+    const std::string j = r.out;
+    std::string d = sub(j, "a_to_b");
+    const double A = tilted_area(), m2 = (0.04 + 0.25 + 0.81 + 0.1 + 0.45 + 0.18) / 6;
+    EXPECT_NEAR(num(d, "area"), A, 1e-12 * A);
+    EXPECT_NEAR(num(d, "mean"), (0.2 + 0.5 + 0.9) / 3, 1e-9 * 0.53);
+    EXPECT_NEAR(num(d, "rms"), std::sqrt(m2), 1e-9 * std::sqrt(m2));
+    EXPECT_NEAR(num(d, "area_above"), tilted_above(0.6), 1e-9 * A);
+    EXPECT_NEAR(num(d, "fraction_above"), tilted_above(0.6) / A, 1e-9);
+    std::string pct = sub(d, "percentiles");
+    for (double p : {50.0, 90.0, 95.0, 99.0}) {
+        double lo = 0.2, hi = 0.9;  // above(t) = (1 - p) A, by bisection on the hand formula
+        for (int it = 0; it < 200; ++it) ((tilted_above(0.5 * (lo + hi)) > (1 - p / 100) * A) ? lo : hi) = 0.5 * (lo + hi);
+        char key[8];
+        std::snprintf(key, sizeof key, "%g", p);
+        EXPECT_NEAR(num(pct, key), hi, 1e-9 * std::sqrt(200.81) + 1e-12) << p;  // 1e-9 of the diagonal of [-5,5]^2 x [0,0.9]
+    }
+    std::string hist = sub(d, "histogram");
+    std::vector<double> edges = numbers(sub(hist, "edges")), areas = numbers(sub(hist, "area"));
+    ASSERT_EQ(edges.size(), 4u);
+    ASSERT_EQ(areas.size(), 3u);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(edges[k + 1], 0.9 * (k + 1) / 3, 1e-12);
+        EXPECT_NEAR(areas[k], tilted_above(edges[k]) - tilted_above(edges[k + 1]), 1e-9 * A) << k;
+    }
+    EXPECT_EQ(num(j, "tolerance"), 0.6);
+    EXPECT_NE(j.find("\"within_tolerance\": false"), std::string::npos) << j;
+}
+
+// A triangle of A whose farthest point from B (B: its three corners, as point triangles) is the
+// middle of its hypotenuse, at 2 sqrt 2: no vertex is farther than any tolerance, so the verdict
+// needs the whole computation, and a tolerance just below or above the distance flips the exit code.
+TEST_F(Cli, ToleranceJustBelowAndAboveTheDistanceFlipsTheExitCode) {
+    std::string a = write("big.obj", "v 0 0 0\nv 4 0 0\nv 0 4 0\nf 1 2 3\n");
+    std::string b = write("corners.obj", "v 0 0 0\nv 4 0 0\nv 0 4 0\nf 1 1 1\nf 2 2 2\nf 3 3 3\n");
+    const double h = 2 * std::sqrt(2.0);
+    for (bool stats : {false, true}) {
+        SCOPED_TRACE(stats);
+        std::vector<std::string> below{"distance", a, b, "--json", "--one-sided", "--tolerance", format_number(h * (1 - 1e-9))};
+        std::vector<std::string> above{"distance", a, b, "--json", "--one-sided", "--tolerance", format_number(h * (1 + 1e-9))};
+        if (stats) { below.push_back("--stats"); above.push_back("--stats"); }
+        Outcome r = run(below);
+        EXPECT_EQ(r.code, 4) << r.err;
+        EXPECT_NE(r.out.find("\"within_tolerance\": false"), std::string::npos) << r.out;
+        EXPECT_NEAR(num(sub(r.out, "a_to_b"), "distance"), h, 1e-12);
+        if (!stats) EXPECT_NE(r.out.find("\"stopped_early\": false"), std::string::npos) << r.out;
+        r = run(above);
+        EXPECT_EQ(r.code, 0) << r.err;
+        EXPECT_NE(r.out.find("\"within_tolerance\": true"), std::string::npos) << r.out;
+        if (stats) EXPECT_EQ(num(sub(r.out, "a_to_b"), "fraction_above"), 0.0);
+    }
+}
+
+// Two parallel triangles at distance 1: every vertex is farther than 0.5, so the verdict stops at once.
+TEST_F(Cli, ToleranceVerdictStopsEarlyAtAFartherVertex) {
+    Outcome r = run({"distance", tri_a(), tri_b(), "--json", "--tolerance", "0.5"});
+    EXPECT_EQ(r.code, 4) << r.err;
+    EXPECT_TRUE(is_json_object(r.out)) << r.out;
+    EXPECT_NE(r.out.find("\"stopped_early\": true"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"within_tolerance\": false"), std::string::npos) << r.out;
+    EXPECT_NEAR(num(r.out, "lower"), 1.0, 1e-12);
+    std::vector<double> p = numbers(sub(r.out, "point"));
+    ASSERT_EQ(p.size(), 3u);
+    EXPECT_EQ(p[2], 0.0);  // a vertex of A
+    r = run({"distance", tri_a(), tri_b(), "--tolerance", "0.5"});
+    EXPECT_EQ(r.code, 4);
+    EXPECT_NE(r.out.find("stopped early"), std::string::npos) << r.out;
+    EXPECT_EQ(run({"distance", tri_a(), tri_b(), "--tolerance", "1.000001"}).code, 0);
+}
+
+TEST_F(Cli, ExportErrorsWritesPlyWithQuality) {
+    std::string a = write("tilt.obj", kTilted), b = write("plane.obj", kPlane);
+    const std::string stem = (dir / "err").string();
+    Outcome r = run({"distance", a, b, "--export-errors", stem + ".ply"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    ASSERT_TRUE(fs::exists(stem + "-ab.ply"));
+    ASSERT_TRUE(fs::exists(stem + "-ba.ply"));
+    Ply p = read_ply(read_file(stem + "-ab.ply"));
+    EXPECT_EQ(p.vertex_props, (std::vector<std::string>{"double x", "double y", "double z", "float quality", "double distance"}));
+    EXPECT_EQ(p.face_props, (std::vector<std::string>{"list vertex_indices", "float quality", "double max_distance",
+                                                      "double mean_distance", "double rms_distance"}));
+    ASSERT_EQ(p.vertices.size(), 3u);
+    ASSERT_EQ(p.faces.size(), 1u);
+    for (int k = 0; k < 3; ++k) {
+        EXPECT_NEAR(p.vertices[k][4], kZ[k], 1e-12);  // the distance of a corner is its height
+        EXPECT_NEAR(p.vertices[k][3], kZ[k], 1e-6);
+    }
+    const std::vector<double>& f = p.faces[0];
+    ASSERT_EQ(f.size(), 8u);
+    EXPECT_NEAR(f[5], 0.9, 1e-12);
+    EXPECT_NEAR(f[6], (0.2 + 0.5 + 0.9) / 3, 1e-9);
+    EXPECT_NEAR(f[7], std::sqrt((0.04 + 0.25 + 0.81 + 0.1 + 0.45 + 0.18) / 6), 1e-9);
+    // --one-sided: one file, at the path given.
+    r = run({"distance", a, b, "--one-sided", "--export-errors", stem + "1.ply"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(fs::exists(stem + "1.ply"));
+    EXPECT_FALSE(fs::exists(stem + "1-ab.ply"));
+}
+
+TEST_F(Cli, StatsBadUsage) {
+    std::string a = tri_a(), b = tri_b();
+    expect_error({"distance", a, b, "--stats", "--histogram", "0"}, "--histogram must be between 1 and 100000");
+    expect_error({"distance", a, b, "--stats", "--histogram", "-3"}, "--histogram must be between 1 and 100000");
+    expect_error({"distance", a, b, "--histogram", "4"}, "--histogram needs --stats");
+    expect_error({"distance", a, b, "--tolerance", "-0.1"}, "--tolerance must be >= 0");
+    expect_error({"distance", a, b, "--tolerance", "abc"}, "--tolerance needs a number");
+    expect_error({"distance", a, b, "--tolerance", "nan"}, "--tolerance needs a number");
+    expect_error({"distance", a, b, "--export-errors", "x.obj"}, "ending in .ply");
+    expect_error({"distance", a, b, "--stats=yes"}, "--stats takes no value");
+    expect_error({"trace", a, b, "--target", "0", "--stats"}, "unknown option");
+}
+
+TEST_F(Cli, StatsReadableSummary) {
+    std::string a = write("tilt.obj", kTilted), b = write("plane.obj", kPlane);
+    Outcome r = run({"distance", a, b, "--stats", "--tolerance", "0.6"});
+    EXPECT_EQ(r.code, 4) << r.err;
+    EXPECT_NE(r.out.find("mean 0.5333333333"), std::string::npos) << r.out;  // (0.2 + 0.5 + 0.9) / 3
+    EXPECT_NE(r.out.find("percentiles (by area)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("NOT within tolerance 0.6"), std::string::npos) << r.out;
+}
+
+// The statistics and the verdict of distance in the shared report (report.h): with --units and the
+// relative values, "within_tolerance" rather than batch's "exceeds"; batch takes none of them.
+TEST_F(Cli, StatsAndVerdictInTheSharedReport) {
+    std::string a = write("tilt.obj", kTilted), b = write("plane.obj", kPlane);
+    Outcome r = run({"distance", a, b, "--json", "--one-sided", "--stats", "--tolerance", "0.6", "--units", "mm"});
+    EXPECT_EQ(r.code, 4) << r.err;
+    ASSERT_TRUE(is_json_object(r.out)) << r.out;
+    std::string d = sub(r.out, "a_to_b");
+    EXPECT_NEAR(num(d, "mean"), (0.2 + 0.5 + 0.9) / 3, 1e-9);
+    EXPECT_EQ(num(d, "relative"), num(d, "distance") / num(r.out, "diagonal"));
+    EXPECT_NE(r.out.find("\"units\": \"mm\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"within_tolerance\": false"), std::string::npos) << r.out;
+    EXPECT_FALSE(has_key(r.out, "exceeds")) << r.out;
+    // stopped early: the units still pass through
+    r = run({"distance", tri_a(), tri_b(), "--json", "--tolerance", "0.5", "--units", "mm"});
+    EXPECT_EQ(r.code, 4) << r.err;
+    EXPECT_NE(r.out.find("\"stopped_early\": true"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"units\": \"mm\""), std::string::npos) << r.out;
+    for (const char* option : {"--stats", "--export-errors"}) {
+        std::vector<std::string> args{"batch", a, b, option};
+        if (std::string(option) == "--export-errors") args.push_back("x.ply");
+        expect_error(args, "unknown option");
+    }
+}

@@ -1,0 +1,399 @@
+// Integrals over domain meshes (core/integrals.h) and the surface statistics built on them
+// (core/surface_stats.h), against oracles derived by hand (areas and moments of triangles, discs
+// and circular segments, the CDF of a linear function over a triangle), Monte Carlo sampling with
+// brute-force point-to-mesh distances, and consistency laws (percentiles monotone and consistent
+// with the area above them, nothing above the maximum, per-triangle sums equal the totals).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "domain_mesh.h"
+#include "integrals.h"
+#include "mesh_io.h"
+#include "point_triangle.h"
+#include "surface_stats.h"
+#include "test_meshes.h"
+
+using namespace hlens;
+using namespace hlens_test;
+
+namespace {
+
+// Area of the circular segment cut from a disc of radius r by a line at distance delta < r.
+double segment_area(double r, double delta) { return r * r * std::acos(delta / r) - delta * std::sqrt(r * r - delta * delta); }
+
+// Adaptive Simpson in long double: the 1D oracle integrals below.
+long double simpson(const std::function<long double(long double)>& f, long double a, long double b, long double fa,
+                    long double fm, long double fb, long double whole, int depth) {
+    long double m = (a + b) / 2, lm = (a + m) / 2, rm = (m + b) / 2;
+    long double flm = f(lm), frm = f(rm);
+    long double left = (m - a) / 6 * (fa + 4 * flm + fm), right = (b - m) / 6 * (fm + 4 * frm + fb);
+    if (depth <= 0 || std::fabs(left + right - whole) < 1e-16L * std::fabs(whole)) return left + right;
+    return simpson(f, a, m, fa, flm, fm, left, depth - 1) + simpson(f, m, b, fm, frm, fb, right, depth - 1);
+}
+double integrate(const std::function<long double(long double)>& f, double a, double b) {
+    long double fa = f(a), fb = f(b), fm = f((a + b) / 2.0L);
+    return (double)simpson(f, a, b, fa, fm, fb, (b - a) / 6.0L * (fa + 4 * fm + fb), 40);
+}
+
+double rel(double got, double want) { return std::fabs(got - want) / std::max(std::fabs(want), 1e-300); }
+
+StatsOptions one_thread() {
+    StatsOptions o;
+    o.threads = 1;
+    return o;
+}
+
+// ---------------------------------------------------------------- one domain mesh
+
+// The unit right triangle split by the circle x^2 + y^2 = r^2 (centre at its corner): the inside
+// piece is a quarter disc, whose area pi r^2 / 4 and polar moment pi r^4 / 8 are known.
+TEST(Integrals, QuarterDiscByGreenAlongAConicArc) {
+    for (double r : {0.3, 0.55, 0.7}) {
+        SCOPED_TRACE(r);
+        DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+        Quadratic2 circle{1, 0, 1, 0, 0, -r * r};
+        Quadratic2 r2{1, 0, 1, 0, 0, 0};
+        double inside = 0, moment = 0, outside = 0, err = 0;
+        for (auto piece : m.split_face(1, circle)) {
+            Integral a = face_area_exact(m, piece.face), q = face_integral(m, piece.face, r2);
+            err += a.error + q.error;
+            if (piece.sign < 0) { inside += a.value; moment += q.value; }
+            else outside += a.value;
+        }
+        EXPECT_LT(rel(inside, M_PI * r * r / 4), 1e-13);
+        EXPECT_LT(rel(moment, M_PI * r * r * r * r / 8), 1e-13);
+        EXPECT_LT(rel(inside + outside, 0.5), 1e-14);
+        EXPECT_LT(err, 1e-13);
+    }
+}
+
+// The integral of sqrt(x^2 + y^2 + h^2) over the quarter disc is (pi/2)((r^2+h^2)^1.5 - h^3)/3.
+TEST(Integrals, SqrtOverQuarterDisc) {
+    for (double h : {0.0, 0.05, 0.4}) {
+        SCOPED_TRACE(h);
+        const double r = 0.6;
+        DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+        Quadratic2 P{1, 0, 1, 0, 0, h * h};
+        double got = 0;
+        for (auto piece : m.split_face(1, Quadratic2{1, 0, 1, 0, 0, -r * r}))
+            if (piece.sign < 0) got += face_sqrt_integral(m, piece.face, P).value;
+        const double want = M_PI / 2 * (std::pow(r * r + h * h, 1.5) - h * h * h) / 3;
+        EXPECT_LT(rel(got, want), 1e-10);
+    }
+}
+
+// |x - 0.3| over the unit right triangle: the kink of sqrt(P) along a line (P = (x - 0.3)^2).
+TEST(Integrals, SqrtOfADoubleLine) {
+    DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+    Quadratic2 P{1, 0, 0, -0.3, 0, 0.09};
+    const double a = 0.3;
+    // Integral over x in [0,1] of |x - a| (1 - x) dx, by hand, in two parts.
+    const double left = a * a / 2 - a * a * a / 6;      // x < a: (a - x)(1 - x)
+    const double right = std::pow(1 - a, 3) / 6;        // x > a: (x - a)(1 - x)
+    Integral got = face_sqrt_integral(m, 1, P);
+    EXPECT_LT(rel(got.value, left + right), 1e-10) << got.value << " vs " << left + right;
+}
+
+TEST(Integrals, GaussLegendreIsExactForPolynomials) {
+    std::vector<double> x, w;
+    gauss_legendre(16, x, w);
+    for (int k = 0; k <= 31; ++k) {
+        double s = 0;
+        for (int i = 0; i < 16; ++i) s += w[i] * std::pow(x[i], k);
+        EXPECT_NEAR(s, k % 2 ? 0.0 : 2.0 / (k + 1), 1e-14) << k;
+    }
+}
+
+// convex_range: contains every value on the box and is attained (to rounding) by some sample:
+// checked against a dense grid of samples, for random convex quadratics (|p - c|^2-like, ranks 1, 2).
+TEST(Integrals, ConvexRangeIsTheRangeOverTheBox) {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> U(-1, 1);
+    for (int k = 0; k < 200; ++k) {
+        const Vec2 n{U(rng), U(rng)}, c{U(rng), U(rng)};
+        Quadratic2 P;  // (n.(p - c))^2 + s |p - c|^2 + h: a face, edge or vertex region's kind
+        const double s = k % 3 == 0 ? 0.0 : std::fabs(U(rng)), h = k % 2 ? 0.0 : std::fabs(U(rng));
+        P.a = n.x * n.x + s; P.b = n.x * n.y; P.c = n.y * n.y + s;
+        P.d = -(P.a * c.x + P.b * c.y); P.e = -(P.b * c.x + P.c * c.y);
+        P.f = P.a * c.x * c.x + 2 * P.b * c.x * c.y + P.c * c.y * c.y + h;
+        Box2 b;
+        b.add({U(rng), U(rng)});
+        b.add({U(rng), U(rng)});
+        const Interval r = convex_range(P, b);
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (int i = 0; i <= 200; ++i)
+            for (int j = 0; j <= 200; ++j) {
+                const double v = P({b.lo.x + (b.hi.x - b.lo.x) * i / 200, b.lo.y + (b.hi.y - b.lo.y) * j / 200});
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
+            }
+        EXPECT_LE(r.lo, lo) << k;
+        EXPECT_GE(r.hi, hi) << k;
+        EXPECT_NEAR(r.hi, hi, 1e-11 * (1 + hi)) << k;            // the corners are samples (and a rounding margin)
+        EXPECT_LT(lo - r.lo, 1e-3 * (1 + hi - lo)) << k;         // the grid is within 1e-3 of the minimum
+    }
+}
+
+// ---------------------------------------------------------------- hand configurations, whole meshes
+
+// A big plane z = 0 (two triangles) under one tilted triangle with heights z1, z2, z3 at its corners:
+// d = z (or |z| when it crosses the plane), linear over the triangle.
+struct Tilted {
+    TriangleMesh A, B;
+    double area = 0, z[3];
+    Tilted(double z1, double z2, double z3) {
+        z[0] = z1; z[1] = z2; z[2] = z3;
+        const Vec3 p[3] = {{0.1, 0.2, z1}, {1.3, 0.5, z2}, {0.4, 1.1, z3}};
+        A = mesh_of({p[0], p[1], p[2]}, {{0, 1, 2}});
+        B = mesh_of({{-5, -5, 0}, {5, -5, 0}, {5, 5, 0}, {-5, 5, 0}}, {{0, 1, 2}, {0, 2, 3}});
+        area = 0.5 * norm(cross(p[1] - p[0], p[2] - p[0]));
+    }
+    // Area of the triangle where z > t (the CDF of a linear function over a triangle).
+    double above(double t) const {
+        double s[3] = {z[0], z[1], z[2]};
+        std::sort(s, s + 3);
+        if (t <= s[0]) return area;
+        if (t >= s[2]) return 0;
+        if (t >= s[1]) return area * (s[2] - t) * (s[2] - t) / ((s[2] - s[0]) * (s[2] - s[1]));
+        return area * (1 - (t - s[0]) * (t - s[0]) / ((s[2] - s[0]) * (s[1] - s[0])));
+    }
+};
+
+TEST(SurfaceStats, TiltedTriangleOverAPlane) {
+    Tilted c(0.2, 0.5, 0.9);
+    VoxelGrid grid(c.A, c.B);
+    StatsOptions o = one_thread();
+    o.tolerance = 0.6;
+    o.histogram_bins = 4;
+    SurfaceStats s = surface_stats(grid, 0, o);
+    const double z1 = c.z[0], z2 = c.z[1], z3 = c.z[2];
+    EXPECT_LT(rel(s.area, c.area), 1e-12);
+    EXPECT_LT(rel(s.mean(), (z1 + z2 + z3) / 3), 1e-9);
+    const double m2 = (z1 * z1 + z2 * z2 + z3 * z3 + z1 * z2 + z2 * z3 + z1 * z3) / 6;  // mean of z^2
+    EXPECT_LT(rel(s.rms(), std::sqrt(m2)), 1e-9);
+    EXPECT_LT(rel(s.max, 0.9), 1e-12);
+    EXPECT_LT(rel(s.area_above, c.above(0.6)), 1e-9);
+    EXPECT_LT(rel(s.fraction_above, c.above(0.6) / c.area), 1e-9);
+    // Percentiles: the t with above(t) = (1 - p) area, by bisection on the hand formula.
+    ASSERT_EQ(s.percentiles.size(), 4u);
+    const double ps[4] = {50, 90, 95, 99};
+    for (int k = 0; k < 4; ++k) {
+        double lo = 0.2, hi = 0.9;
+        for (int it = 0; it < 200; ++it) ((c.above(0.5 * (lo + hi)) > (1 - ps[k] / 100) * c.area) ? lo : hi) = 0.5 * (lo + hi);
+        EXPECT_NEAR(s.percentiles[k], hi, s.percentile_tolerance + 1e-12) << ps[k];
+    }
+    ASSERT_EQ(s.histogram_area.size(), 4u);
+    for (int k = 0; k < 4; ++k) {
+        const double e0 = 0.9 * k / 4, e1 = 0.9 * (k + 1) / 4;
+        EXPECT_NEAR(s.histogram_edges[k], e0, 1e-15);
+        EXPECT_LT(std::fabs(s.histogram_area[k] - (c.above(e0) - c.above(e1))), 1e-9 * c.area) << k;
+    }
+    EXPECT_EQ(s.sliver_targets, 0u);
+}
+
+// The triangle crosses the plane: d = |z|, with a kink along z = 0.
+TEST(SurfaceStats, TiltedTriangleThroughAPlane) {
+    Tilted c(-0.3, 0.4, 0.7);
+    VoxelGrid grid(c.A, c.B);
+    StatsOptions o = one_thread();
+    o.tolerance = 0.2;
+    SurfaceStats s = surface_stats(grid, 0, o);
+    const double z1 = -0.3, z2 = 0.4, z3 = 0.7;
+    const double neg_area = c.area * z1 * z1 / ((z2 - z1) * (z3 - z1));  // the corner where z < 0
+    const double int_abs = c.area * (z1 + z2 + z3) / 3 - 2 * neg_area * z1 / 3;
+    EXPECT_LT(rel(s.int_d, int_abs), 1e-9);
+    const double m2 = (z1 * z1 + z2 * z2 + z3 * z3 + z1 * z2 + z2 * z3 + z1 * z3) / 6;
+    EXPECT_LT(rel(s.rms(), std::sqrt(m2)), 1e-9);
+    // |z| > 0.2: z > 0.2 plus z < -0.2 (the corner triangle near z1, similar to the negative one).
+    const double below = neg_area * (z1 + 0.2) * (z1 + 0.2) / (z1 * z1);
+    EXPECT_LT(rel(s.area_above, c.above(0.2) + below), 1e-9);
+}
+
+// A triangle whose every point is nearest to the vertex v = (0, 0, h) of B's single triangle:
+// d^2 = x^2 + y^2 + h^2, and d > t outside the circle of radius sqrt(t^2 - h^2).
+struct NearestVertex {
+    TriangleMesh A, B;
+    double h = 0.5;
+    NearestVertex() {
+        // An equilateral triangle with inradius 1 centred at the origin (side 2 sqrt 3, area 3 sqrt 3).
+        std::vector<Vec3> p;
+        for (int k = 0; k < 3; ++k) {
+            const double a = M_PI / 2 + 2 * M_PI * k / 3;
+            p.push_back({2 * std::cos(a), 2 * std::sin(a), 0});
+        }
+        A = mesh_of(p, {{0, 1, 2}});
+        // v's region holds every p with (p - v).(b - v) <= 0 and (p - v).(c - v) <= 0: |x|, |y| <= 5 here.
+        B = mesh_of({{0, 0, h}, {1, 0, h + 10}, {0, 1, h + 10}}, {{0, 1, 2}});
+    }
+    static double area() { return 3 * std::sqrt(3.0); }
+    // Area of the triangle inside the disc of radius r (r < 2): the disc less three segments.
+    static double inside(double r) { return M_PI * r * r - (r > 1 ? 3 * segment_area(r, 1) : 0); }
+    double above(double t) const { return t <= h ? area() : area() - inside(std::sqrt(t * t - h * h)); }
+};
+
+TEST(SurfaceStats, EveryPointNearestToOneVertex) {
+    NearestVertex c;
+    VoxelGrid grid(c.A, c.B);
+    StatsOptions o = one_thread();
+    o.tolerance = std::sqrt(1.2 * 1.2 + c.h * c.h);  // the circle of radius 1.2 crosses all three edges
+    SurfaceStats s = surface_stats(grid, 0, o);
+    const double A = NearestVertex::area();
+    EXPECT_LT(rel(s.area, A), 1e-12);
+    // Integral of x^2 + y^2 over the triangle is its polar moment A a^2 / 12 = A (a^2 = 12).
+    EXPECT_LT(rel(s.int_d2, A * (1 + c.h * c.h)), 1e-9);
+    // Integral of d: six right triangles (angle 0..pi/3, edge at distance 1):
+    //   6 * integral over theta of ((sec^2 + h^2)^1.5 - h^3) / 3.
+    const double h = c.h;
+    const double int_d = 6 * integrate([&](long double th) {
+        long double sec2 = 1 / (std::cos(th) * std::cos(th));
+        return (std::pow(sec2 + h * h, 1.5L) - h * h * h) / 3;
+    }, 0, M_PI / 3);
+    EXPECT_LT(rel(s.int_d, int_d), 1e-9);
+    EXPECT_LT(rel(s.area_above, c.above(o.tolerance)), 1e-9);
+    // The median: a disc inside the triangle holds half the area, pi r^2 = A / 2.
+    const double r50 = std::sqrt(A / 2 / M_PI);
+    EXPECT_NEAR(s.percentiles[0], std::sqrt(r50 * r50 + h * h), s.percentile_tolerance + 1e-12);
+    for (int k = 1; k < 4; ++k) {  // 90, 95, 99 by bisection on the hand formula
+        const double p = k == 1 ? 90 : k == 2 ? 95 : 99;
+        double lo = h, hi = 2.1;
+        for (int it = 0; it < 200; ++it) ((c.above(0.5 * (lo + hi)) > (1 - p / 100) * A) ? lo : hi) = 0.5 * (lo + hi);
+        EXPECT_NEAR(s.percentiles[k], hi, s.percentile_tolerance + 1e-12) << p;
+    }
+    EXPECT_LT(rel(s.max, std::sqrt(4 + h * h)), 1e-12);  // at the corners, distance 2 from the centre
+}
+
+// ---------------------------------------------------------------- laws on a real pair
+
+struct RealPair : ::testing::Test {
+    static TriangleMesh spot, spot_moved;
+    static void SetUpTestSuite() {
+        spot = load_mesh(std::string(HLENS_SHARED_MESHES) + "/spot.obj");
+        spot_moved = jittered(spot, 2e-3 * spot.bounds().diagonal(), 7);
+    }
+};
+TriangleMesh RealPair::spot, RealPair::spot_moved;
+
+// Uniform samples on A (by area), their exact distances to B by brute force over all triangles.
+std::vector<double> sample_distances(const TriangleMesh& A, const TriangleMesh& B, int n, unsigned seed) {
+    std::vector<double> cum;
+    double total = 0;
+    for (size_t t = 0; t < A.num_triangles(); ++t) {
+        auto c = A.corners(t);
+        total += 0.5 * norm(cross(c[1] - c[0], c[2] - c[0]));
+        cum.push_back(total);
+    }
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> U(0, 1);
+    std::vector<double> d(n);
+    for (int i = 0; i < n; ++i) {
+        size_t t = std::lower_bound(cum.begin(), cum.end(), U(rng) * total) - cum.begin();
+        t = std::min(t, A.num_triangles() - 1);
+        double u = U(rng), v = U(rng);
+        if (u + v > 1) { u = 1 - u; v = 1 - v; }
+        auto c = A.corners(t);
+        Vec3 p = c[0] + u * (c[1] - c[0]) + v * (c[2] - c[0]);
+        double best = HUGE_VAL;
+        for (size_t s = 0; s < B.num_triangles(); ++s) {
+            auto q = B.corners(s);
+            best = std::min(best, closest_point_on_triangle(p, q[0], q[1], q[2]).dist2);
+        }
+        d[i] = std::sqrt(best);
+    }
+    return d;
+}
+
+TEST_F(RealPair, MonteCarloAgreesWithinStandardErrors) {
+    VoxelGrid grid(spot, spot_moved);
+    StatsOptions o;
+    const double diag = spot.bounds().diagonal();
+    o.tolerance = 2e-3 * diag;
+    SurfaceStats s = surface_stats(grid, 0, o);
+    const int n = 4000;
+    std::vector<double> d = sample_distances(spot, spot_moved, n, 99);
+    auto mean_se = [&](const std::function<double(double)>& f, double& mean, double& se) {
+        double sum = 0, sum2 = 0;
+        for (double x : d) { sum += f(x); sum2 += f(x) * f(x); }
+        mean = sum / n;
+        se = std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n);
+    };
+    double m, se;
+    mean_se([](double x) { return x; }, m, se);
+    EXPECT_LT(std::fabs(s.mean() - m), 4 * se) << s.mean() << " vs " << m << " +- " << se;
+    mean_se([](double x) { return x * x; }, m, se);
+    EXPECT_LT(std::fabs(s.int_d2 / s.area - m), 4 * se) << s.int_d2 / s.area << " vs " << m << " +- " << se;
+    mean_se([&](double x) { return x > o.tolerance ? 1.0 : 0.0; }, m, se);
+    EXPECT_LT(std::fabs(s.fraction_above - m), 4 * se + 1e-12) << s.fraction_above << " vs " << m << " +- " << se;
+    std::sort(d.begin(), d.end());
+    EXPECT_LE(d.back(), s.max * (1 + 1e-12));  // no sample is farther than the exact maximum
+}
+
+TEST_F(RealPair, LawsOfTheStatistics) {
+    TriangleMesh A = spot;
+    A.triangles.resize(400);  // a patch of spot: fast enough for several runs
+    VoxelGrid grid(A, spot_moved);
+    StatsOptions o;
+    o.percentiles = {0, 10, 50, 90, 95, 99, 100};
+    o.histogram_bins = 7;
+    SurfaceStats s = surface_stats(grid, 0, o);
+    // The triangles' areas from the tiling of their domain meshes equal their areas by cross product.
+    double area = 0, sum_area = 0, sum_d = 0, sum_d2 = 0, max = 0;
+    for (size_t t = 0; t < A.num_triangles(); ++t) {
+        auto c = A.corners(t);
+        const double a = 0.5 * norm(cross(c[1] - c[0], c[2] - c[0]));
+        area += a;
+        EXPECT_NEAR(s.triangles[t].area, a, 1e-11 * a + 1e-300) << t;
+        sum_area += s.triangles[t].area;
+        sum_d += s.triangles[t].int_d;
+        sum_d2 += s.triangles[t].int_d2;
+        max = std::max(max, s.triangles[t].max);
+        EXPECT_LE(s.triangles[t].mean(), s.triangles[t].max * (1 + 1e-12));
+        EXPECT_LE(s.triangles[t].mean(), s.triangles[t].rms() * (1 + 1e-12));  // Jensen
+    }
+    EXPECT_NEAR(sum_area, s.area, 1e-13 * area);
+    EXPECT_NEAR(sum_d, s.int_d, 1e-12 * s.int_d);
+    EXPECT_NEAR(sum_d2, s.int_d2, 1e-12 * s.int_d2);
+    EXPECT_EQ(max, s.max);
+    EXPECT_NEAR(s.area, area, 1e-11 * area);
+    double hsum = 0;
+    for (double a : s.histogram_area) { EXPECT_GE(a, -1e-12 * area); hsum += a; }
+    EXPECT_NEAR(hsum, s.area, 1e-11 * area);
+    ASSERT_EQ(s.percentiles.size(), 7u);
+    for (size_t k = 1; k < 7; ++k) EXPECT_LE(s.percentiles[k - 1], s.percentiles[k]);
+    EXPECT_NEAR(s.percentiles.back(), s.max, s.percentile_tolerance * 1.01);
+    // Consistency with the area above: above(p-th percentile) <= (1 - p) area < above(just below it).
+    for (size_t k = 1; k + 1 < 7; ++k) {
+        const double p = o.percentiles[k], t = s.percentiles[k];
+        StatsOptions q = o;
+        q.percentiles.clear();
+        q.tolerance = t;
+        const double at = surface_stats(grid, 0, q).area_above;
+        q.tolerance = t - 2 * s.percentile_tolerance;
+        const double below = surface_stats(grid, 0, q).area_above;
+        EXPECT_LE(at, (1 - p / 100) * s.area * (1 + 1e-12)) << p;
+        EXPECT_GT(below, (1 - p / 100) * s.area * (1 - 1e-12)) << p;
+    }
+    // Nothing lies above the maximum.
+    StatsOptions q = o;
+    q.percentiles.clear();
+    q.tolerance = s.max;
+    EXPECT_EQ(surface_stats(grid, 0, q).fraction_above, 0.0);
+}
+
+TEST(SurfaceStats, BadOptions) {
+    Tilted c(0.2, 0.5, 0.9);
+    VoxelGrid grid(c.A, c.B);
+    StatsOptions o;
+    o.histogram_bins = -1;
+    EXPECT_THROW(surface_stats(grid, 0, o), std::invalid_argument);
+    o = StatsOptions{};
+    o.percentiles = {101};
+    EXPECT_THROW(surface_stats(grid, 0, o), std::invalid_argument);
+    EXPECT_THROW(surface_stats(grid, 2, StatsOptions{}), std::invalid_argument);
+}
+
+}  // namespace
