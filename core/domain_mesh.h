@@ -123,6 +123,9 @@ public:
     std::vector<Vec2> sample_loop(int h, int per_arc) const;  // a polyline along a loop
     Vec2 edge_point(int e, double s) const;          // s in [0,1] along the arc's parameter
     const Stats& stats() const { return stats_; }
+    // Drop every kept face box (cached_face_box recomputes them): for a copy that will be split on
+    // its own (core/integrals.cpp), whatever the state of the original's cache.
+    void forget_face_boxes() { std::fill(box_stamp_.begin(), box_stamp_.end(), 0); }
 
     // Building blocks, public for tests.
     struct SplitPiece { int face; int sign; };

@@ -410,6 +410,10 @@ double LevelClipper::above(double t2) {
         if (r.lo > t2) { sum += face_area((int)f); continue; }
         Quadratic2 g = F.poly;
         g.f -= t2;
+        // The mesh's cache of face boxes can be left stale by an edit (the construction's and
+        // split_face's own: found by cached_face_box's debug check, by about 1e-7 here), and
+        // split_face trusts it: each split starts from freshly computed boxes.
+        copy->forget_face_boxes();
         for (const DomainMesh::SplitPiece& piece : copy->split_face((int)f, g)) {
             if ((size_t)piece.face < area.size()) area[piece.face] = NAN;  // a changed face
             if (piece.sign > 0) sum += face_area(piece.face);

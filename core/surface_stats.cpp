@@ -98,6 +98,33 @@ struct Bracket {
     double lo, hi, goal;       // A(lo) > goal >= A(hi): the percentile lies in (lo, hi]
     double alo, ahi;           // A(lo), A(hi)
     bool done;
+    int kept_lo = 0, kept_hi = 0;  // passes in a row that moved only the other end (Illinois)
+    double last_width = HUGE_VAL;  // hi - lo before the last pass
+    // The next levels to clip at: either side (width/2, 32 width, ...) of the regula falsi point, with the
+    // Illinois rule (an end kept twice in a row counts half as far from the goal) so the
+    // convergence is superlinear, and the middle when the last pass did not halve the bracket.
+    void levels(double width, std::vector<double>& out) const {
+        double fl = alo - goal, fh = ahi - goal;  // > 0, <= 0
+        if (kept_lo >= 2) fl *= std::pow(0.5, kept_lo - 1);
+        if (kept_hi >= 2) fh *= std::pow(0.5, kept_hi - 1);
+        const double mid = 0.5 * (lo + hi);
+        const double guess = fl - fh > 0 ? lo + (hi - lo) * fl / (fl - fh) : mid;
+        for (double step = 0.5 * width; step < hi - lo; step *= 64)  // a sparse ladder around it
+            for (double t : {guess - step, guess + step})
+                if (t > lo && t < hi) out.push_back(t);
+        if (hi - lo > 0.5 * last_width && mid > lo && mid < hi) out.push_back(mid);
+    }
+    void update(const std::vector<double>& levels, const std::vector<double>& A) {
+        const double old_lo = lo, old_hi = hi;
+        last_width = hi - lo;
+        for (size_t j = 0; j < levels.size(); ++j) {
+            if (levels[j] <= lo || levels[j] >= hi) continue;
+            if (A[j] > goal) { lo = levels[j]; alo = A[j]; }
+            else { hi = levels[j]; ahi = A[j]; break; }
+        }
+        kept_lo = lo == old_lo ? kept_lo + 1 : 0;
+        kept_hi = hi == old_hi ? kept_hi + 1 : 0;
+    }
 };
 
 // Targets whose distance range meets an open bracket: only these can tell the brackets' ends apart.
@@ -111,11 +138,6 @@ std::vector<uint32_t> targets_in_brackets(const std::vector<TargetPass>& pass, c
     return rerun;
 }
 
-// One refinement pass: the targets that meet an open bracket are re-run and clipped at levels
-// inside it: k evenly spaced (the bracket shrinks at least k + 1 times whatever A looks like) and a
-// ladder guess +- width/2 * 16^j around where the straight line between (lo, A(lo)) and (hi, A(hi))
-// meets the goal. A is smooth, so the guess is close, the ladder brackets it tightly, and the next
-// pass's line through the tight bracket lands within width: a few passes in all.
 // Domain meshes kept between the passes over the targets, up to a memory budget; the others are
 // rebuilt (re-running the construction) in every pass.
 struct MeshCache {
@@ -145,17 +167,15 @@ struct MeshCache {
     }
 };
 
+// One refinement pass: the targets that meet an open bracket are re-run and clipped at the few
+// levels Bracket::levels asks for (A is smooth but for small kinks, so the regula falsi point is
+// close and the two levels either side of it usually close the bracket within a few passes; the
+// middle, when a pass did not halve a bracket, bounds the number of passes whatever A looks like).
 void refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, std::vector<Bracket>& br,
-                     const std::vector<uint32_t>& rerun, int k, double width, const StatsOptions& opt, MeshCache& cache) {
+                     const std::vector<uint32_t>& rerun, double width, const StatsOptions& opt, MeshCache& cache) {
     std::vector<double> levels;
-    for (const Bracket& b : br) {
-        if (b.done) continue;
-        for (int j = 1; j <= k; ++j) levels.push_back(b.lo + (b.hi - b.lo) * j / (k + 1));
-        const double guess = b.alo > b.ahi ? b.lo + (b.hi - b.lo) * (b.alo - b.goal) / (b.alo - b.ahi) : 0.5 * (b.lo + b.hi);
-        for (double step = 0.5 * width; step < b.hi - b.lo; step *= 4)
-            for (double t : {guess - step, guess + step})
-                if (t > b.lo && t < b.hi) levels.push_back(t);
-    }
+    for (const Bracket& b : br)
+        if (!b.done) b.levels(width, levels);
     std::sort(levels.begin(), levels.end());
     levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
     std::vector<TargetPass> now = pass;  // the same targets, with partial areas at the new levels
@@ -167,14 +187,8 @@ void refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPa
         });
     });
     const std::vector<double> A = level_areas(now, levels);
-    for (Bracket& b : br) {
-        if (b.done) continue;
-        for (size_t j = 0; j < levels.size(); ++j) {
-            if (levels[j] <= b.lo || levels[j] >= b.hi) continue;
-            if (A[j] > b.goal) { b.lo = levels[j]; b.alo = A[j]; }
-            else { b.hi = levels[j]; b.ahi = A[j]; break; }
-        }
-    }
+    for (Bracket& b : br)
+        if (!b.done) b.update(levels, A);
 }
 
 void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, const std::vector<double>& probes,
@@ -197,7 +211,7 @@ void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>&
         if (rerun.empty() || (opt.cancel && opt.cancel->load())) break;
         out.rerun_targets += rerun.size();
         ++out.percentile_passes;
-        refine_brackets(grid, side, pass, br, rerun, 3, out.percentile_tolerance, opt, cache);
+        refine_brackets(grid, side, pass, br, rerun, out.percentile_tolerance, opt, cache);
     }
     out.cancelled = opt.cancel && opt.cancel->load();
     for (const Bracket& b : br) out.percentiles.push_back(b.hi);
