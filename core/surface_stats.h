@@ -7,7 +7,7 @@
 // mesh is integrated (integrals.h). Percentiles are found by bisection on the exact area above t:
 // a first pass measures that area at fixed probe levels, which brackets each percentile between
 // two probes; further passes over only the targets whose distance range meets a bracket clip them
-// at a few levels inside it (evenly spaced, and a ladder around the secant guess), until every
+// at a few levels inside it (around the regula falsi point: Bracket in the .cpp), until every
 // bracket is narrower than 1e-9 of the bounding-box diagonal. Domain meshes are kept between the
 // passes up to a memory budget (about 1 GB); the others are rebuilt.
 //

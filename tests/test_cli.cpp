@@ -849,3 +849,43 @@ TEST_F(Cli, StatsAndVerdictInTheSharedReport) {
         expect_error(args, "unknown option");
     }
 }
+
+// On a pair of bumpy grids: each direction's area is its mesh's area (cross products here), the
+// histogram's areas add up to it, the percentiles rise and lie within [0, distance], and the
+// fraction above the distance itself is 0.
+TEST_F(Cli, StatsOfARandomPairAreConsistent) {
+    const Obj ga = random_grid(8, 1.0, 0.0, 0.0, 0.25, 12345), gb = random_grid(7, 1.1, -0.05, 0.03, 0.3, 777);
+    const std::string a = write("ra.obj", obj_text(ga)), b = write("rb.obj", obj_text(gb));
+    auto area = [](const Obj& m) {
+        double s = 0;
+        for (auto f : m.f) {
+            const P3 &p = m.v[f[0]], &q = m.v[f[1]], &r = m.v[f[2]];
+            const double ux = q.x - p.x, uy = q.y - p.y, uz = q.z - p.z, vx = r.x - p.x, vy = r.y - p.y, vz = r.z - p.z;
+            const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+            s += 0.5 * std::sqrt(cx * cx + cy * cy + cz * cz);
+        }
+        return s;
+    };
+    std::string j = run_json({"distance", a, b, "--json", "--stats", "--histogram", "5"});
+    for (const char* dir : {"a_to_b", "b_to_a"}) {
+        SCOPED_TRACE(dir);
+        const std::string d = sub(j, dir);
+        const double want = std::string(dir) == "a_to_b" ? area(ga) : area(gb), h = num(d, "distance");
+        EXPECT_NEAR(num(d, "area"), want, 1e-11 * want);
+        double sum = 0;
+        for (double x : numbers(sub(sub(d, "histogram"), "area"))) { EXPECT_GE(x, 0.0); sum += x; }
+        EXPECT_NEAR(sum, want, 1e-11 * want);
+        const std::string p = sub(d, "percentiles");
+        const double p50 = num(p, "50"), p90 = num(p, "90"), p95 = num(p, "95"), p99 = num(p, "99");
+        EXPECT_LE(0.0, p50);
+        EXPECT_LE(p50, p90);
+        EXPECT_LE(p90, p95);
+        EXPECT_LE(p95, p99);
+        EXPECT_LE(p99, h + 1e-9);
+        EXPECT_LE(num(d, "mean"), num(d, "rms") * (1 + 1e-12));
+        EXPECT_LE(num(d, "rms"), h * (1 + 1e-12));
+    }
+    Outcome r = run({"distance", a, b, "--json", "--stats", "--one-sided", "--tolerance", format_number(num(sub(j, "a_to_b"), "distance"))});
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_EQ(num(sub(r.out, "a_to_b"), "fraction_above"), 0.0);
+}
