@@ -19,28 +19,8 @@ if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
 fi
 formats=(obj ply stl off gltf)
 
-bash scripts/install-deps.sh
 # libFuzzer (libclang_rt.fuzzer) is in libclang-rt-14-dev, which clang only recommends.
-need=()
-for p in clang libclang-rt-14-dev; do
-  if [ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)" != "install ok installed" ]; then
-    need+=("$p")
-  fi
-done
-if [ ${#need[@]} -gt 0 ]; then
-  SUDO=()
-  if [ "$(id -u)" -ne 0 ]; then
-    if command -v sudo >/dev/null 2>&1; then
-      SUDO=(sudo)
-    else
-      echo "fuzz.sh: missing packages: ${need[*]}; run this script as root" >&2
-      exit 1
-    fi
-  fi
-  echo "fuzz.sh: installing ${need[*]}"
-  "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
-  "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "${need[@]}"
-fi
+bash scripts/install-deps.sh clang libclang-rt-14-dev
 
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ -DHLENS_FUZZ=ON \
   -DHLENS_BUILD_TESTS=OFF -DHLENS_BUILD_BENCH=OFF -DHLENS_BUILD_GUI=OFF

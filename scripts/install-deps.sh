@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Hausdorff Lens needs to build, test and run (see README.md,
 # "Dependencies"). Idempotent: when every package is already installed it does nothing, quickly.
-# Run as root (or as a user with sudo).
+# Run as root (or as a user with sudo). Extra package names given as arguments are installed too
+# (scripts/fuzz.sh adds clang and libFuzzer's runtime this way).
 set -euo pipefail
 
 PACKAGES=(
@@ -11,6 +12,7 @@ PACKAGES=(
   libgtest-dev googletest libbenchmark-dev
   xvfb xauth mesa-utils libgl1-mesa-dri
   python3-dev pybind11-dev python3-numpy python3-pytest
+  "$@"
 )
 
 missing=()
