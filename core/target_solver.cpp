@@ -484,11 +484,8 @@ std::string TargetSolver::validate(bool thorough) const {
     std::string msg = mesh_->validate();
     if (!msg.empty()) return msg;
     std::vector<SourceProjection> proj;
-    double delta = 0;
-    for (uint32_t s : inserted_) {
-        proj.push_back(project_source(frame_, source_corners(s), s));
-        delta = std::max(delta, proj.back().delta);
-    }
+    for (uint32_t s : inserted_) proj.push_back(project_source(frame_, source_corners(s), s));
+    const double delta = mesh_->delta();  // the tie rule's allowance, as the mesh applied it
     const double noise = rounding_sq() / (frame_.scale * frame_.scale);  // frame units squared
     const auto& F = mesh_->faces();
     char buf[320];

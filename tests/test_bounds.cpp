@@ -9,8 +9,10 @@
 #include "mesh_io.h"
 #include "point_triangle.h"
 #include "voxel_grid.h"
+#include "test_meshes.h"
 
 using namespace hlens;
+using hlens_test::brute_distance;
 
 namespace {
 
@@ -41,15 +43,6 @@ TriangleMesh random_mesh(std::mt19937& g, int n, double lo, double hi, double si
         m.triangles.push_back({i, i + 1, i + 2});
     }
     return m;
-}
-
-double brute_distance(const Vec3& p, const TriangleMesh& B) {
-    double best = HUGE_VAL;
-    for (uint32_t t = 0; t < B.num_triangles(); ++t) {
-        auto c = B.corners(t);
-        best = std::min(best, closest_point_on_triangle(p, c[0], c[1], c[2]).dist2);
-    }
-    return std::sqrt(best);
 }
 
 TriangleMesh load_shared(const std::string& name) {

@@ -42,15 +42,6 @@ std::vector<std::array<Vec3, 3>> inserted_corners(const TargetSolver& ts) {
     return out;
 }
 
-double brute_distance(const TriangleMesh& to, const Vec3& p) {
-    double best = HUGE_VAL;
-    for (size_t t = 0; t < to.num_triangles(); ++t) {
-        const auto c = to.corners(t);
-        best = std::min(best, closest_point_on_triangle(p, c[0], c[1], c[2]).dist2);
-    }
-    return std::sqrt(best);
-}
-
 // max over the used vertices of A, and over a barycentric grid on every triangle of A, of the
 // distance to B: both lower bounds of h(A, B).
 void brute_lower_bounds(const TriangleMesh& A, const TriangleMesh& B, double& vertex, double& sampled) {
@@ -61,7 +52,7 @@ void brute_lower_bounds(const TriangleMesh& A, const TriangleMesh& B, double& ve
         for (int i = 0; i <= n; ++i)
             for (int j = 0; i + j <= n; ++j) {
                 const double u = double(i) / n, v = double(j) / n;
-                const double d = brute_distance(B, c[0] + (c[1] - c[0]) * u + (c[2] - c[0]) * v);
+                const double d = brute_distance(c[0] + (c[1] - c[0]) * u + (c[2] - c[0]) * v, B);
                 sampled = std::max(sampled, d);
                 if ((i == 0 || i == n || j == 0) && (i + j == 0 || i == n || j == n)) vertex = std::max(vertex, d);
             }

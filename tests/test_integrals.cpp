@@ -297,12 +297,7 @@ std::vector<double> sample_distances(const TriangleMesh& A, const TriangleMesh& 
         if (u + v > 1) { u = 1 - u; v = 1 - v; }
         auto c = A.corners(t);
         Vec3 p = c[0] + u * (c[1] - c[0]) + v * (c[2] - c[0]);
-        double best = HUGE_VAL;
-        for (size_t s = 0; s < B.num_triangles(); ++s) {
-            auto q = B.corners(s);
-            best = std::min(best, closest_point_on_triangle(p, q[0], q[1], q[2]).dist2);
-        }
-        d[i] = std::sqrt(best);
+        d[i] = brute_distance(p, B);
     }
     return d;
 }

@@ -1,6 +1,7 @@
 // Mesh generators shared by the core tests: random soups, height fields, degenerate configurations,
 // perturbed and simplified copies. Deterministic for a given seed.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <random>
@@ -8,12 +9,23 @@
 #include <vector>
 
 #include "mesh_io.h"
+#include "point_triangle.h"
 
 namespace hlens_test {
 
 using namespace hlens;
 
 inline TriangleMesh mesh_of(std::vector<Vec3> p, std::vector<Tri> t) { return make_mesh(std::move(p), std::move(t), "test"); }
+
+// The distance from p to the mesh B by brute force over all of its triangles (an oracle).
+inline double brute_distance(const Vec3& p, const TriangleMesh& B) {
+    double best = HUGE_VAL;
+    for (size_t t = 0; t < B.num_triangles(); ++t) {
+        const auto c = B.corners(t);
+        best = std::min(best, closest_point_on_triangle(p, c[0], c[1], c[2]).dist2);
+    }
+    return std::sqrt(best);
+}
 
 inline TriangleMesh random_triangle_soup(std::mt19937& rng, int n, double size, Vec3 centre, double spread) {
     std::uniform_real_distribution<double> U(-1, 1);
