@@ -767,10 +767,7 @@ void draw_domain_view(AppState& s) {
         ImGui::SetTooltip("colour T' by the nearest source feature, computed directly from the sources\n"
                           "(CPU, %d px), and compare with the domain mesh's labels", 256);
     if (st.show_overlay && st.overlay_revision == st.revision && mesh) {
-        if (st.overlay_disagree == 0 && st.overlay_ties > 0)  // shown as ties, not as disagreements
-            ImGui::TextColored(ImVec4(0.5f, 1, 0.5f, 1), "overlay agrees (%.0f%% ties)",
-                               100.0 * st.overlay_ties / std::max(1L, st.overlay_samples));
-        else if (st.overlay_disagree == 0)
+        if (st.overlay_disagree == 0)
             ImGui::TextColored(ImVec4(0.5f, 1, 0.5f, 1), "overlay agrees");
         else
             ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "overlay disagrees at %ld samples: core bug?", st.overlay_disagree);
@@ -778,6 +775,8 @@ void draw_domain_view(AppState& s) {
             ImGui::SetTooltip("%ld samples compared (%ld agree by a tie: another feature with the same\n"
                               "quadratic is nearest, e.g. coplanar sources or a shared edge),\n%ld within 2 px of a change not compared",
                               st.overlay_samples, st.overlay_ties, st.overlay_ignored);
+        if (st.overlay_ties > 0)  // shown as ties, not as disagreements (on a line of its own: the legend is narrow)
+            ImGui::TextColored(ImVec4(0.5f, 1, 0.5f, 1), "%.0f%% ties", 100.0 * st.overlay_ties / std::max(1L, st.overlay_samples));
     }
     ImGui::TextDisabled("%d domains", st.live_domains);
     std::map<std::pair<int, int>, std::pair<ImU32, int>> labels;
