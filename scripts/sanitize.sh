@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds everything (Debug, -DHLENS_SANITIZE=ON: AddressSanitizer + UndefinedBehaviorSanitizer) in
 # build-asan/ and runs the whole test suite there, including the debugger's tests (suite Gui) under
-# xvfb-run. hlens and hlens-cli, which the tests run as processes, are instrumented too.
+# Xvfb. hlens and hlens-cli, which the tests run as processes, are instrumented too.
 # Every sanitizer report (also from those processes, whose stderr the tests capture) is written to
 # build-asan/sanitizer-logs/ and printed at the end; the script fails if there is any, or if the build
 # or a test fails. CI runs it from scripts/test.sh.

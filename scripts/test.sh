@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds everything (Release) in build/ and runs the whole test suite,
-# including the debugger's tests (suite Gui), which run hlens headless under xvfb-run.
+# including the debugger's tests (suite Gui), which run hlens headless on an Xvfb server.
 # With CI set (.ci/run) it then runs scripts/sanitize.sh and scripts/fuzz.sh 60.
 # Exits non-zero if the build or any test fails.
 set -euo pipefail
@@ -9,14 +9,14 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
-# In CI the debugger must be built and its tests must not be skipped for want of xvfb-run.
+# In CI the debugger must be built and its tests must not be skipped for want of Xvfb.
 if [ -n "${CI:-}" ]; then
   if [ ! -x build/bin/hlens ]; then
     echo "test.sh: build/bin/hlens was not built (GLFW, OpenGL or Dear ImGui not found?)" >&2
     exit 1
   fi
-  if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "test.sh: xvfb-run is missing: the Gui tests would be skipped" >&2
+  if ! command -v Xvfb >/dev/null 2>&1; then
+    echo "test.sh: Xvfb is missing: the Gui tests would be skipped" >&2
     exit 1
   fi
 fi

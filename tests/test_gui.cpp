@@ -1,8 +1,8 @@
 // Tests of the interactive debugger hlens (app/hlens/), run as a separate process in headless
-// screenshot mode under xvfb-run (Mesa's llvmpipe renders OpenGL without a GPU).
+// screenshot mode on an Xvfb server (Mesa's llvmpipe renders OpenGL without a GPU).
 //
 // Compiled only when the hlens target exists (CMake then defines HLENS_GUI as its path); every
-// test that needs a display is skipped when xvfb-run is not on PATH. Each run writes a PNG, which
+// test that needs a display is skipped when Xvfb is not on PATH. Each run writes a PNG, which
 // is read back with stb_image and checked pixel by pixel, and prints the state behind the picture
 // as one JSON line, which is checked against hlens-cli (HLENS_CLI).
 #ifdef HLENS_GUI
@@ -13,6 +13,8 @@
 #include "mesh_io.h"
 #include "target_solver.h"
 #include "voxel_grid.h"
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -96,24 +98,57 @@ fs::path scratch_dir() {
     return d;
 }
 
-bool have_xvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+// A fresh X server for each run of hlens (no pointer position or focus left over from the previous
+// run), started by hand with Xvfb -displayfd, which takes a free display number atomically. Not
+// xvfb-run -a: it races other runs for a display number, and once in CI its clean-up of its
+// temporary directory failed and turned the application's exit code 2 into its own 5.
+class XServer {
+  public:
+    XServer(const XServer&) = delete;
+    XServer& operator=(const XServer&) = delete;
+    const std::string& display() const { return display_; }
+    ~XServer() {
+        if (pid_ > 0) {
+            ::kill(pid_, SIGTERM);
+            ::waitpid(pid_, nullptr, 0);
+        }
+    }
+    XServer() {
+        int fds[2];
+        if (::pipe(fds) != 0) return;
+        pid_ = ::fork();
+        if (pid_ == 0) {
+            ::close(fds[0]);
+            const int null = ::open("/dev/null", O_WRONLY);
+            if (null >= 0) ::dup2(null, 2);
+            const std::string fd = std::to_string(fds[1]);
+            ::execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "2600x1600x24", "-nolisten", "tcp",
+                     (char*)nullptr);
+            ::_exit(127);
+        }
+        ::close(fds[1]);
+        std::string number;
+        char c;
+        while (pid_ > 0 && ::read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+        ::close(fds[0]);
+        if (!number.empty()) display_ = ":" + number;
+    }
+  private:
+    pid_t pid_ = -1;
+    std::string display_;  // empty when Xvfb could not start
+};
 
-// hlens <args> --screenshot <png> --size 800x600 under a fresh X server. xvfb-run -a can lose a
-// race for a display number when tests run in parallel: such a start failure is retried.
+bool have_xvfb() { return std::system("command -v Xvfb >/dev/null 2>&1") == 0; }
+
+// hlens <args> --screenshot <png> --size 800x600 on a fresh X server.
 Outcome run_gui(std::vector<std::string> args, const fs::path& png, const fs::path& dir, const fs::path& cwd = {},
                 const std::string& size = "800x600") {
-    std::vector<std::string> argv = {"xvfb-run", "-a", "-s", "-screen 0 2600x1600x24", kGui};
+    XServer server;
+    EXPECT_FALSE(server.display().empty()) << "Xvfb did not start";
+    std::vector<std::string> argv = {"env", "DISPLAY=" + server.display(), kGui};
     argv.insert(argv.end(), args.begin(), args.end());
     argv.insert(argv.end(), {"--screenshot", png.string(), "--size", size});
-    Outcome o;
-    for (int attempt = 0; attempt < 4; ++attempt) {
-        o = run(argv, dir, cwd);
-        if (o.err.find("Xvfb failed to start") == std::string::npos &&
-            o.err.find("server already running") == std::string::npos)
-            break;
-        ::sleep(1 + attempt);
-    }
-    return o;
+    return run(argv, dir, cwd);
 }
 
 struct Image {
@@ -234,7 +269,7 @@ CliDistance cli_distance(const fs::path& dir) {
 }
 
 #define REQUIRE_XVFB() \
-    if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not on PATH"
+    if (!have_xvfb()) GTEST_SKIP() << "Xvfb is not on PATH"
 
 }  // namespace
 
