@@ -228,8 +228,8 @@ static void voxel_grid(benchmark::State& state, const char* file) {
     size_t voxels = 0, assignments = 0;
     for (auto _ : state) {
         VoxelGrid grid(p->a, p->b);
-        voxels = grid.num_voxels();
-        assignments = grid.num_assignments(0) + grid.num_assignments(1);
+        voxels = grid.of(0).num_voxels() + grid.of(1).num_voxels();
+        assignments = grid.of(0).num_assignments() + grid.of(1).num_assignments();
         benchmark::DoNotOptimize(grid);
     }
     state.counters["voxels"] = (double)voxels;

@@ -104,14 +104,24 @@ void TargetSolver::emit(Event e) {
 }
 
 double TargetSolver::voxel_distance2(size_t v) const {
-    auto c = grid_.coords(v);
+    const MeshGrid& g = grid_.of(1 - side_);
     double best = HUGE_VAL;
+    if (outside_grid_) {  // the gap between the target's box and the voxel's, less the margins
+        const Box3 b = g.voxel_box(v);
+        best = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double gap = std::max({0.0, b.lo[i] - box_.hi[i], box_.lo[i] - b.hi[i]}) - 2 * g.margin();
+            if (gap > 0) best += gap * gap;
+        }
+        return best;
+    }
+    auto c = g.coords(v);
     for (const auto& t : target_voxels_) {
         double d2 = 0;
         for (int i = 0; i < 3; ++i) {
             // Triangles are listed in voxels enlarged by margin(): the gap shrinks by two of them.
-            double g = std::max(0.0, std::max(0, std::abs(c[i] - t[i]) - 1) * grid_.voxel_size - 2 * grid_.margin());
-            d2 += g * g;
+            double gap = std::max(0.0, std::max(0, std::abs(c[i] - t[i]) - 1) * g.voxel_size - 2 * g.margin());
+            d2 += gap * gap;
         }
         best = std::min(best, d2);
     }
@@ -121,19 +131,30 @@ double TargetSolver::voxel_distance2(size_t v) const {
 void TargetSolver::begin() {
     // Started here, not in the constructor: several solvers may live on one thread (the debugger
     // keeps one per target), but only the one being run uses the stamps at a time.
-    seen_ = std::make_unique<Seen>(grid_.num_voxels(), grid_.mesh(1 - side_).num_triangles());
-    for (size_t v : grid_.voxels_of_triangle(corners_)) {
-        target_voxels_.push_back(grid_.coords(v));
-        seen_->voxels().insert(v);
-        queue_.push({0.0, v});
-    }
-    if (target_voxels_.empty()) {  // cannot happen for a triangle inside the grid; be safe
-        size_t v = 0;
-        auto c = grid_.locate(corners_[0]);
-        v = grid_.index(c[0], c[1], c[2]);
-        target_voxels_.push_back(c);
-        seen_->voxels().insert(v);
-        queue_.push({0.0, v});
+    const MeshGrid& g = grid_.of(1 - side_);
+    seen_ = std::make_unique<Seen>(g.num_voxels(), g.mesh().num_triangles());
+    const Box3 gb = g.box();
+    outside_grid_ = !(box_.lo.x >= gb.lo.x && box_.lo.y >= gb.lo.y && box_.lo.z >= gb.lo.z && box_.hi.x <= gb.hi.x &&
+                      box_.hi.y <= gb.hi.y && box_.hi.z <= gb.hi.z);
+    if (!outside_grid_)
+        for (size_t v : g.voxels_of_triangle(corners_)) {
+            target_voxels_.push_back(g.coords(v));
+            seen_->voxels().insert(v);
+            queue_.push({0.0, v});
+        }
+    if (target_voxels_.empty()) {
+        // The target is (partly) outside the sources' grid: start from the voxels its box clamps to.
+        // Each other voxel has a path to them along which the box gap never grows, so the search
+        // still visits voxels in increasing order of distance.
+        outside_grid_ = true;
+        const auto lo = g.locate(box_.lo), hi = g.locate(box_.hi);
+        for (int k = lo[2]; k <= hi[2]; ++k)
+            for (int j = lo[1]; j <= hi[1]; ++j)
+                for (int i = lo[0]; i <= hi[0]; ++i) {
+                    const size_t v = g.index(i, j, k);
+                    seen_->voxels().insert(v);
+                    queue_.push({voxel_distance2(v), v});
+                }
     }
     if (watching()) {
         Event e = make_event(EventKind::TargetBegun);
@@ -182,24 +203,23 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
             emit(e);
             voxel_log_.push_back({top.voxel, 2});
         }
-        auto c = grid_.coords(top.voxel);
+        const MeshGrid& g = grid_.of(1 - side_);
+        auto c = g.coords(top.voxel);
         for (int dz = -1; dz <= 1; ++dz)
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx) {
                     int i = c[0] + dx, j = c[1] + dy, k = c[2] + dz;
-                    if (i < 0 || j < 0 || k < 0 || i >= grid_.nx || j >= grid_.ny || k >= grid_.nz) continue;
-                    size_t v = grid_.index(i, j, k);
+                    if (i < 0 || j < 0 || k < 0 || i >= g.nx || j >= g.ny || k >= g.nz) continue;
+                    size_t v = g.index(i, j, k);
                     if (!seen_->voxels().insert(v)) continue;
                     double d2 = voxel_distance2(v);
                     queue_.push({d2, v});
                     if (watching()) voxel_log_.push_back({v, 1});
                 }
         // Sources of this voxel, nearest (by bounding boxes) last so pop_back takes it first.
-        int other = 1 - side_;
         std::vector<std::pair<double, uint32_t>> found;
-        for (const uint32_t* it = grid_.begin(other, top.voxel); it != grid_.end(other, top.voxel); ++it)
-            if (seen_->sources().insert(*it))
-                found.push_back({box_distance2(tbox, grid_.mesh(other).triangle_bounds(*it)), *it});
+        for (const uint32_t* it = g.begin(top.voxel); it != g.end(top.voxel); ++it)
+            if (seen_->sources().insert(*it)) found.push_back({box_distance2(tbox, g.mesh().triangle_bounds(*it)), *it});
         std::sort(found.begin(), found.end(), [](auto& a, auto& b) { return a.first > b.first || (a.first == b.first && a.second > b.second); });
         for (auto& f : found) { pending_sources_.push_back(f.second); pending_dist_.push_back(f.first); }
         pending_voxel_ = top.voxel;

@@ -158,6 +158,7 @@ private:
     long next_step_ = 0;
 
     std::vector<std::array<int, 3>> target_voxels_;
+    bool outside_grid_ = false;        // the target is not inside the sources' grid: box gaps
     std::priority_queue<QueueItem> queue_;
     std::vector<size_t> seen_voxels_;   // sorted insertion not needed: small; use a hash set below
     std::vector<uint32_t> pending_sources_;

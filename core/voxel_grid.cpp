@@ -25,13 +25,10 @@ bool triangle_box_overlap(const Vec3& bc, const Vec3& h, const Vec3& a, const Ve
     return !separates(cross(e[0], e[1]));  // triangle normal
 }
 
-VoxelGrid::VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double k) {
-    mesh_[0] = &a;
-    mesh_[1] = &b;
+MeshGrid::MeshGrid(const TriangleMesh& mesh, double k) : mesh_(&mesh) {
     if (!(k > 0)) k = 1;
-    Box3 box = a.bounds();
-    box.add(b.bounds());
-    const double nm = double(a.num_triangles() + b.num_triangles());
+    const Box3 box = mesh.bounds();
+    const double nm = std::max<double>(1, mesh.num_triangles());
     if (box.empty()) {
         origin = {0, 0, 0};
         voxel_size = 1;
@@ -62,53 +59,49 @@ VoxelGrid::VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double k) {
     margin_ = 1e-9 * voxel_size + 4e-15 * M;
 
     const size_t nv = num_voxels();
-    for (int side = 0; side < 2; ++side) {  // two passes: count, then fill
-        std::vector<size_t>& offs = offs_[side];
-        offs.assign(nv + 1, 0);
-        for (uint32_t t = 0; t < mesh_[side]->num_triangles(); ++t)
-            for_each_voxel_of(side, t, [&](size_t v) { ++offs[v + 1]; });
-        for (size_t v = 0; v < nv; ++v) offs[v + 1] += offs[v];
-        items_[side].resize(offs[nv]);
-        std::vector<size_t> pos(offs.begin(), offs.end() - 1);
-        for (uint32_t t = 0; t < mesh_[side]->num_triangles(); ++t)
-            for_each_voxel_of(side, t, [&](size_t v) { items_[side][pos[v]++] = t; });
-        // Each listed triangle's box beside it, rounded outward to float: nearest() rejects most
-        // triangles from the list alone, without fetching their corners.
-        boxes_[side].resize(items_[side].size());
-        for (size_t k = 0; k < items_[side].size(); ++k) {
-            const Box3 b = mesh_[side]->triangle_bounds(items_[side][k]);
-            for (int i = 0; i < 3; ++i) {
-                boxes_[side][k].lo[i] = std::nextafter((float)b.lo[i], -HUGE_VALF);
-                boxes_[side][k].hi[i] = std::nextafter((float)b.hi[i], HUGE_VALF);
-            }
+    offs_.assign(nv + 1, 0);  // two passes: count, then fill
+    for (uint32_t t = 0; t < mesh.num_triangles(); ++t)
+        for_each_voxel_of(mesh.corners(t), [&](size_t v) { ++offs_[v + 1]; });
+    for (size_t v = 0; v < nv; ++v) offs_[v + 1] += offs_[v];
+    items_.resize(offs_[nv]);
+    std::vector<size_t> pos(offs_.begin(), offs_.end() - 1);
+    for (uint32_t t = 0; t < mesh.num_triangles(); ++t)
+        for_each_voxel_of(mesh.corners(t), [&](size_t v) { items_[pos[v]++] = t; });
+    // Each listed triangle's box beside it, rounded outward to float: nearest() rejects most
+    // triangles from the list alone, without fetching their corners.
+    boxes_.resize(items_.size());
+    for (size_t i = 0; i < items_.size(); ++i) {
+        const Box3 b = mesh.triangle_bounds(items_[i]);
+        for (int c = 0; c < 3; ++c) {
+            boxes_[i].lo[c] = std::nextafter((float)b.lo[c], -HUGE_VALF);
+            boxes_[i].hi[c] = std::nextafter((float)b.hi[c], HUGE_VALF);
         }
     }
     // Occupancy pyramid for far queries.
-    pyramid_.push_back({nx, ny, nz, {}});
-    for (int side = 0; side < 2; ++side) {
-        pyramid_[0].occ[side].resize(nv);
-        for (size_t v = 0; v < nv; ++v) pyramid_[0].occ[side][v] = offs_[side][v + 1] > offs_[side][v];
-    }
+    pyramid_.push_back({nx, ny, nz, std::vector<uint8_t>(nv)});
+    for (size_t v = 0; v < nv; ++v) pyramid_[0].occ[v] = offs_[v + 1] > offs_[v];
     while (pyramid_.back().nx > 1 || pyramid_.back().ny > 1 || pyramid_.back().nz > 1) {
         const Level& f = pyramid_.back();
         Level c{(f.nx + 1) / 2, (f.ny + 1) / 2, (f.nz + 1) / 2, {}};
-        for (int side = 0; side < 2; ++side) {
-            c.occ[side].assign(size_t(c.nx) * c.ny * c.nz, 0);
-            for (int k = 0; k < f.nz; ++k)
-                for (int j = 0; j < f.ny; ++j)
-                    for (int i = 0; i < f.nx; ++i)
-                        if (f.occ[side][(size_t(k) * f.ny + j) * f.nx + i])
-                            c.occ[side][(size_t(k / 2) * c.ny + j / 2) * c.nx + i / 2] = 1;
-        }
+        c.occ.assign(size_t(c.nx) * c.ny * c.nz, 0);
+        for (int kk = 0; kk < f.nz; ++kk)
+            for (int j = 0; j < f.ny; ++j)
+                for (int i = 0; i < f.nx; ++i)
+                    if (f.occ[(size_t(kk) * f.ny + j) * f.nx + i]) c.occ[(size_t(kk / 2) * c.ny + j / 2) * c.nx + i / 2] = 1;
         pyramid_.push_back(std::move(c));
     }
 }
 
-std::array<int, 3> VoxelGrid::coords(size_t idx) const {
+std::array<int, 3> MeshGrid::coords(size_t idx) const {
     return {int(idx % nx), int((idx / nx) % ny), int(idx / (size_t(nx) * ny))};
 }
 
-Box3 VoxelGrid::voxel_box(size_t idx) const {
+Box3 MeshGrid::box() const {
+    const Vec3 m(margin_, margin_, margin_);
+    return {origin - m, origin + Vec3(nx, ny, nz) * voxel_size + m};
+}
+
+Box3 MeshGrid::voxel_box(size_t idx) const {
     auto c = coords(idx);
     Box3 b;
     b.lo = origin + Vec3(c[0], c[1], c[2]) * voxel_size;
@@ -116,7 +109,7 @@ Box3 VoxelGrid::voxel_box(size_t idx) const {
     return b;
 }
 
-std::array<int, 3> VoxelGrid::locate(const Vec3& p) const {
+std::array<int, 3> MeshGrid::locate(const Vec3& p) const {
     const int n[3] = {nx, ny, nz};
     std::array<int, 3> r;
     for (int i = 0; i < 3; ++i) {
@@ -127,12 +120,7 @@ std::array<int, 3> VoxelGrid::locate(const Vec3& p) const {
 }
 
 template <class F>
-void VoxelGrid::for_each_voxel_of(int side, uint32_t t, F&& f) const {
-    for_each_voxel_of(mesh_[side]->corners(t), f);
-}
-
-template <class F>
-void VoxelGrid::for_each_voxel_of(const std::array<Vec3, 3>& corners, F&& f) const {
+void MeshGrid::for_each_voxel_of(const std::array<Vec3, 3>& corners, F&& f) const {
     const auto& [a, b, c] = corners;
     Box3 tb;
     for (const Vec3& p : corners) tb.add(p);
@@ -155,13 +143,9 @@ void VoxelGrid::for_each_voxel_of(const std::array<Vec3, 3>& corners, F&& f) con
             }
 }
 
-std::vector<size_t> VoxelGrid::voxels_of_triangle(int side, uint32_t t) const {
-    std::vector<size_t> r;
-    for_each_voxel_of(side, t, [&](size_t v) { r.push_back(v); });
-    return r;
-}
+std::vector<size_t> MeshGrid::voxels_of_triangle(uint32_t t) const { return voxels_of_triangle(mesh_->corners(t)); }
 
-std::vector<size_t> VoxelGrid::voxels_of_triangle(const std::array<Vec3, 3>& corners) const {
+std::vector<size_t> MeshGrid::voxels_of_triangle(const std::array<Vec3, 3>& corners) const {
     std::vector<size_t> r;
     for_each_voxel_of(corners, [&](size_t v) { r.push_back(v); });
     return r;
@@ -176,8 +160,8 @@ static double point_box_distance2(const Vec3& p, const Vec3& lo, const Vec3& hi)
     return d2;
 }
 
-VoxelGrid::Nearest VoxelGrid::nearest(int side, const Vec3& p, uint32_t hint) const {
-    const TriangleMesh& M = *mesh_[side];
+MeshGrid::Nearest MeshGrid::nearest(const Vec3& p, uint32_t hint) const {
+    const TriangleMesh& M = *mesh_;
     Nearest best{UINT32_MAX, p, std::numeric_limits<double>::infinity()};
     if (M.triangles.empty()) return best;
     auto consider = [&](uint32_t t) {
@@ -196,8 +180,8 @@ VoxelGrid::Nearest VoxelGrid::nearest(int side, const Vec3& p, uint32_t hint) co
         Vec3 lo = origin + Vec3(i, j, k) * s - Vec3(m, m, m);
         if (point_box_distance2(p, lo, lo + Vec3(s + 2 * m, s + 2 * m, s + 2 * m)) > best.dist2) return;
         size_t v = index(i, j, k);
-        const FloatBox* fb = boxes_[side].data() + offs_[side][v];
-        for (const uint32_t* t = begin(side, v); t != end(side, v); ++t, ++fb) {
+        const FloatBox* fb = boxes_.data() + offs_[v];
+        for (const uint32_t* t = begin(v); t != end(v); ++t, ++fb) {
             double d2 = 0;
             for (int a = 0; a < 3; ++a) {
                 const double g = std::max({0.0, fb->lo[a] - p[a], p[a] - fb->hi[a]});
@@ -245,7 +229,7 @@ VoxelGrid::Nearest VoxelGrid::nearest(int side, const Vec3& p, uint32_t hint) co
     std::vector<Cell> heap;
     auto push = [&](int level, int i, int j, int k) {
         const Level& L = pyramid_[level];
-        if (!L.occ[side][(size_t(k) * L.ny + j) * L.nx + i]) return;
+        if (!L.occ[(size_t(k) * L.ny + j) * L.nx + i]) return;
         if (level == 0 && std::abs(i - c0[0]) <= kShells && std::abs(j - c0[1]) <= kShells &&
             std::abs(k - c0[2]) <= kShells)
             return;

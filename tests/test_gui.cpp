@@ -271,6 +271,27 @@ CliDistance cli_distance(const fs::path& dir) {
 #define REQUIRE_XVFB() \
     if (!have_xvfb()) GTEST_SKIP() << "Xvfb is not on PATH"
 
+// The event lines of the demo's B-to-A target 22, from hlens-cli trace (A against B: the meshes
+// swapped). Tests pick their steps from it by what the event is, not by a fixed number, so that a
+// change of the search order (e.g. of the grid) does not silently move them.
+std::vector<std::string> demo_trace_lines(const fs::path& dir) {
+    Outcome t = run({kCli, "trace", kDemoB, kDemoA, "--target", "22", "--json"}, dir);
+    EXPECT_EQ(t.code, 0) << t.err;
+    std::vector<std::string> lines;
+    std::istringstream in(t.out);
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    return lines;
+}
+
+bool is_event(const std::string& line, const std::string& name) { return line.find("\"" + name + "\"") != std::string::npos; }
+
+// The first step >= from whose event is `name`; -1 if none.
+long first_event(const std::vector<std::string>& lines, const std::string& name, size_t from) {
+    for (size_t i = from; i < lines.size(); ++i)
+        if (is_event(lines[i], name)) return (long)i;
+    return -1;
+}
+
 }  // namespace
 
 TEST(Gui, UsageErrorsExitTwoWithoutADisplay) {
@@ -562,39 +583,30 @@ TEST(Gui, TargetOutOfRangeShowsTheErrorPanelAndExitsTwo) {
 TEST(Gui, StepShowsTheTargetMidConstruction) {
     REQUIRE_XVFB();
     fs::path dir = scratch_dir(), png = dir / "step.png";
-    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", "40"}, png, dir);
+    // Independently: replay hlens-cli's event stream. The view shows the state at event k itself
+    // (the debugger keeps a snapshot at each event inside an insertion): one domain (T') plus what
+    // every split up to event k added, minus every merge up to it. k: the first event inside an
+    // insertion (a split, a relabel or a merge) from 40 on with at least 20 domains to colour.
+    const std::vector<std::string> lines = demo_trace_lines(dir);
+    long k = -1, created = 0, expect = 1;
+    for (size_t i = 0; i < lines.size() && k < 0; ++i) {
+        const std::string& l = lines[i];
+        if (is_event(l, "domain_created") || is_event(l, "domain_split")) ++created;
+        if (is_event(l, "domain_split")) expect += (long)int_list(l, "faces").size() - 1;
+        if (is_event(l, "domain_merged")) --expect;
+        if (i >= 40 && expect >= 20 && l.find("\"domain_") != std::string::npos) k = (long)i;
+    }
+    ASSERT_GE(k, 40);
+    Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", std::to_string(k)}, png, dir);
     ASSERT_EQ(o.code, 0) << o.err;
-    EXPECT_EQ((long)num(o.out, "step"), 40);
+    EXPECT_EQ((long)num(o.out, "step"), k);
     EXPECT_EQ(raw_value(o.out, "step_finished"), "false");
     const size_t at = o.out.find("\"step_state\"");
     ASSERT_NE(at, std::string::npos) << o.out;
     const long domains = (long)num(o.out, "domains", at), insertions = (long)num(o.out, "insertions", at);
-
-    // Independently: replay hlens-cli's event stream. The view shows the state at event 40 itself
-    // (the debugger keeps a snapshot at each event inside an insertion): one domain (T') plus what
-    // every split up to event 40 added, minus every merge up to it.
-    Outcome t = run({kCli, "trace", kDemoB, kDemoA, "--target", "22", "--json"}, dir);
-    ASSERT_EQ(t.code, 0) << t.err;
-    std::vector<std::string> lines;
-    std::istringstream in(t.out);
-    for (std::string l; std::getline(in, l);) lines.push_back(l);
-    ASSERT_GT(lines.size(), 41u);
-    const long k = (long)num(lines[40], "insertion");
-    long created = 0, expect = 1;
-    for (size_t i = 0; i <= 40; ++i) {
-        const std::string& l = lines[i];
-        if (l.find("\"domain_created\"") != std::string::npos || l.find("\"domain_split\"") != std::string::npos) ++created;
-        if (l.find("\"domain_split\"") != std::string::npos) expect += (long)int_list(l, "faces").size() - 1;
-        if (l.find("\"domain_merged\"") != std::string::npos) --expect;
-    }
-    // Event 40 is inside an insertion (a split, a relabel or a merge): the view says which source.
-    const bool inside = lines[40].find("\"domain_") != std::string::npos;
-    EXPECT_TRUE(inside) << lines[40];
-    if (inside) {
-        EXPECT_EQ((long)num(o.out, "inserting", at), (long)num(lines[40], "source"));
-    }
+    EXPECT_EQ((long)num(o.out, "inserting", at), (long)num(lines[k], "source"));
     EXPECT_GT(created, 0);
-    EXPECT_EQ(insertions, k);
+    EXPECT_EQ(insertions, (long)num(lines[k], "insertion"));
     EXPECT_EQ(domains, expect);
     EXPECT_GT(domains, 1);
 
@@ -642,9 +654,12 @@ TEST(Gui, ArrowKeysStepTheTimeline) {
     Outcome f = run_gui({"--direction", "ba", "--target", "22", "--step", "40", "--key", "right", "--key", "right"}, png, dir);
     ASSERT_EQ(f.code, 0) << f.err;
     EXPECT_EQ((long)num(f.out, "step"), 42);
-    Outcome b = run_gui({"--direction", "ba", "--target", "22", "--step", "40", "--key", "left"}, png, dir);
+    // Back from the step after a merge: the view names the merge (the trace's event there).
+    const long merge = first_event(demo_trace_lines(dir), "domain_merged", 20);
+    ASSERT_GT(merge, 0);
+    Outcome b = run_gui({"--direction", "ba", "--target", "22", "--step", std::to_string(merge + 1), "--key", "left"}, png, dir);
     ASSERT_EQ(b.code, 0) << b.err;
-    EXPECT_EQ((long)num(b.out, "step"), 39);
+    EXPECT_EQ((long)num(b.out, "step"), merge);
     EXPECT_EQ(raw_value(b.out, "step_event"), "\"domain_merged\"");
 }
 
@@ -770,7 +785,10 @@ TEST(Gui, SearchRadiusFollowsTheInsertions) {
 TEST(Gui, GraphMaximumIsTheSolversMaximum) {
     REQUIRE_XVFB();
     fs::path dir = scratch_dir(), png = dir / "graph.png";
-    for (const char* step : {"end", "60"}) {
+    // Mid-construction: the last event of an insertion (the one before the next source is chosen).
+    const long mid = first_event(demo_trace_lines(dir), "source_chosen", 50) - 1;
+    ASSERT_GT(mid, 0);
+    for (const std::string step : {std::string("end"), std::to_string(mid)}) {
         Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", step, "--graph"}, png, dir);
         ASSERT_EQ(o.code, 0) << o.err;
         const size_t at = o.out.find("\"graph\"");

@@ -486,3 +486,48 @@ TEST(DomainCaches, KeptGeometryMatchesTheSampledBoundary) {
     }
     EXPECT_GT(curved_faces, 20);  // conic arcs were exercised
 }
+
+// Meshes far apart (README, "One grid per mesh"): a small target far from a fine mesh looks at the
+// sources near its search radius, not at all of them, and its answer is still right. With one grid
+// over both meshes the fine mesh fell into one voxel and every target scanned every source.
+TEST(SolverFarApart, ATargetFarAwayLooksOnlyNearItsSearchRadius) {
+    const TriangleMesh fine = height_field(100, [](double x, double y) { return 0.1 * std::sin(3 * x) * y; });
+    TriangleMesh small = height_field(2, [](double x, double) { return 0.05 * x; });
+    for (Vec3& p : small.positions) p = p * 0.01 + Vec3(300, 200, 100);
+    const VoxelGrid grid(small, fine);
+    for (uint32_t t = 0; t < small.num_triangles(); ++t) {
+        TargetSolver ts(grid, 0, t);
+        ts.record_events();
+        ts.run();
+        size_t looked_at = 0;
+        for (const Event& e : ts.events())
+            looked_at += e.kind == EventKind::SourceChosen || e.kind == EventKind::SourceCulled;
+        // Every source the search looks at lies in a voxel within the search radius of the target:
+        // its box is within the radius plus two voxel diagonals of the target's box.
+        auto c = small.corners(t);
+        Box3 tb;
+        for (const Vec3& v : c) tb.add(v);
+        const double reach = std::sqrt(ts.max_sq()) + 2 * std::sqrt(3.0) * grid.of(1).voxel_size;
+        size_t near = 0;
+        for (uint32_t s = 0; s < fine.num_triangles(); ++s) {
+            const Box3 sb = fine.triangle_bounds(s);
+            double d2 = 0;
+            for (int i = 0; i < 3; ++i) {
+                const double g = std::max({0.0, sb.lo[i] - tb.hi[i], tb.lo[i] - sb.hi[i]});
+                d2 += g * g;
+            }
+            near += d2 <= reach * reach;
+        }
+        EXPECT_LE(looked_at, near) << "target " << t;
+        EXPECT_LT(near, fine.num_triangles() / 10) << "target " << t << ": the configuration should need few sources";
+        // The answer: at least every corner's distance (brute force), at most the largest corner
+        // distance plus the target's size (1-Lipschitz).
+        double corners = 0, size = 0;
+        for (int k = 0; k < 3; ++k) {
+            corners = std::max(corners, brute_distance(c[k], fine));
+            size = std::max(size, norm(c[k] - c[(k + 1) % 3]));
+        }
+        EXPECT_GE(std::sqrt(ts.max_sq()), corners * (1 - 1e-12));
+        EXPECT_LE(std::sqrt(ts.max_sq()), corners + size);
+    }
+}

@@ -150,12 +150,10 @@ TriangleMesh load_shared(const std::string& name) {
     return hlens::load_mesh(path);
 }
 
-bool lists(const VoxelGrid& g, int side, size_t v, uint32_t t) {
-    return std::binary_search(g.begin(side, v), g.end(side, v), t);
-}
+bool lists(const MeshGrid& g, size_t v, uint32_t t) { return std::binary_search(g.begin(v), g.end(v), t); }
 
 // Every voxel whose closed box contains p (two per axis when p is on a voxel face).
-std::vector<size_t> voxels_containing(const VoxelGrid& g, const Vec3& p) {
+std::vector<size_t> voxels_containing(const MeshGrid& g, const Vec3& p) {
     const int n[3] = {g.nx, g.ny, g.nz};
     std::vector<int> c[3];
     for (int i = 0; i < 3; ++i) {
@@ -171,41 +169,40 @@ std::vector<size_t> voxels_containing(const VoxelGrid& g, const Vec3& p) {
 }
 
 // Every triangle is listed in every voxel its surface touches, and voxels_of_triangle agrees with the lists.
-void check_coverage(const VoxelGrid& g, int samples_per_edge = 24) {
-    for (int side = 0; side < 2; ++side) {
-        const TriangleMesh& m = g.mesh(side);
-        for (uint32_t t = 0; t < m.num_triangles(); ++t) {
-            auto c = m.corners(t);
-            const int n = samples_per_edge;
-            for (int i = 0; i <= n; ++i)
-                for (int j = 0; i + j <= n; ++j) {
-                    Vec3 p = c[0] * (double(i) / n) + c[1] * (double(j) / n) + c[2] * (double(n - i - j) / n);
-                    for (size_t v : voxels_containing(g, p))
-                        ASSERT_TRUE(lists(g, side, v, t)) << "side " << side << " triangle " << t << " voxel " << v;
-                }
-            std::vector<size_t> vs = g.voxels_of_triangle(side, t);
-            ASSERT_FALSE(vs.empty());
-            for (size_t v : vs) {
-                ASSERT_TRUE(lists(g, side, v, t));
-                // Not absurdly conservative: the triangle comes within a half voxel diagonal of the centre.
-                Box3 b = g.voxel_box(v);
-                Vec3 ctr = (b.lo + b.hi) * 0.5;
-                EXPECT_LE(closest_point_on_triangle(ctr, c[0], c[1], c[2]).dist2,
-                          0.75 * g.voxel_size * g.voxel_size * (1 + 1e-6));
+void check_coverage(const MeshGrid& g, int samples_per_edge = 24) {
+    const TriangleMesh& m = g.mesh();
+    for (uint32_t t = 0; t < m.num_triangles(); ++t) {
+        auto c = m.corners(t);
+        const int n = samples_per_edge;
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j) {
+                Vec3 p = c[0] * (double(i) / n) + c[1] * (double(j) / n) + c[2] * (double(n - i - j) / n);
+                for (size_t v : voxels_containing(g, p)) ASSERT_TRUE(lists(g, v, t)) << "triangle " << t << " voxel " << v;
             }
+        std::vector<size_t> vs = g.voxels_of_triangle(t);
+        ASSERT_FALSE(vs.empty());
+        for (size_t v : vs) {
+            ASSERT_TRUE(lists(g, v, t));
+            // Not absurdly conservative: the triangle comes within a half voxel diagonal of the centre.
+            Box3 b = g.voxel_box(v);
+            Vec3 ctr = (b.lo + b.hi) * 0.5;
+            EXPECT_LE(closest_point_on_triangle(ctr, c[0], c[1], c[2]).dist2, 0.75 * g.voxel_size * g.voxel_size * (1 + 1e-6));
         }
-        size_t total = 0;
-        for (uint32_t t = 0; t < m.num_triangles(); ++t) total += g.voxels_of_triangle(side, t).size();
-        EXPECT_EQ(total, g.num_assignments(side));
     }
+    size_t total = 0;
+    for (uint32_t t = 0; t < m.num_triangles(); ++t) total += g.voxels_of_triangle(t).size();
+    EXPECT_EQ(total, g.num_assignments());
 }
 
-// nearest() against brute force over all triangles, at points inside and far outside the box.
-void check_nearest(const VoxelGrid& g, int side, int npoints, unsigned seed) {
+void check_coverage(const VoxelGrid& g, int samples_per_edge = 24) {
+    for (int side = 0; side < 2; ++side) check_coverage(g.of(side), samples_per_edge);
+}
+
+// nearest() against brute force over all triangles, at points inside and far outside `box` (the
+// box of both meshes: queries come from the other mesh too).
+void check_nearest(const MeshGrid& g, Box3 box, int npoints, unsigned seed) {
     std::mt19937 gen(seed);
-    const TriangleMesh& m = g.mesh(side);
-    Box3 box = g.mesh(0).bounds();
-    box.add(g.mesh(1).bounds());
+    const TriangleMesh& m = g.mesh();
     Vec3 ctr = (box.lo + box.hi) * 0.5;
     double diag = std::max(box.diagonal(), 1e-3);
     std::uniform_int_distribution<uint32_t> pick(0, uint32_t(m.num_triangles() - 1));
@@ -218,13 +215,23 @@ void check_nearest(const VoxelGrid& g, int side, int npoints, unsigned seed) {
             auto c = m.corners(t);
             brute = std::min(brute, closest_point_on_triangle(p, c[0], c[1], c[2]).dist2);
         }
-        VoxelGrid::Nearest r = g.nearest(side, p);
+        MeshGrid::Nearest r = g.nearest(p);
         ASSERT_EQ(r.dist2, brute) << "query " << q;
         auto c = m.corners(r.triangle);
         EXPECT_EQ(closest_point_on_triangle(p, c[0], c[1], c[2]).dist2, r.dist2);
         EXPECT_NEAR(norm2(p - r.point), r.dist2, 1e-9 * (r.dist2 + diag * diag * 1e-6));
-        VoxelGrid::Nearest h = g.nearest(side, p, pick(gen));  // a hint never changes the answer
+        MeshGrid::Nearest h = g.nearest(p, pick(gen));  // a hint never changes the answer
         EXPECT_EQ(h.dist2, brute);
+    }
+}
+
+void check_nearest(const VoxelGrid& g, int side, int npoints, unsigned seed) {
+    Box3 box = g.mesh(0).bounds();
+    box.add(g.mesh(1).bounds());
+    check_nearest(g.of(side), box, npoints, seed);
+    for (int k = 0; k < 3; ++k) {  // the pair answers as its grid does
+        const Vec3 p = g.mesh(side).corners(0)[k] * 0.5 + box.hi * 0.5;
+        EXPECT_EQ(g.nearest(side, p).dist2, g.of(side).nearest(p).dist2);
     }
 }
 
@@ -315,36 +322,44 @@ TEST(PointTriangle, FarFromOriginAndTinyTriangles) {
 // ===================================================================== VoxelGrid
 
 TEST(VoxelGrid, SizeFollowsStraubFormula) {
-    TriangleMesh a = cube_mesh({0, 0, 0}, {1, 1, 1}), b = cube_mesh({0.25, 0.25, 0.25}, {0.75, 0.75, 0.75});
-    // Box 1x1x1, n+m = 24: k = s^2 * 24 / (2*3)  =>  s = sqrt(k/4).
-    VoxelGrid g1(a, b, 1.0);
+    TriangleMesh a = cube_mesh({0, 0, 0}, {1, 1, 1});
+    // One grid per mesh. Box 1x1x1, n = 12: k = s^2 * 12 / (2*3)  =>  s = sqrt(k/2).
+    MeshGrid g1(a, 0.5);
     EXPECT_DOUBLE_EQ(g1.voxel_size, 0.5);
     EXPECT_EQ(g1.nx, 2); EXPECT_EQ(g1.ny, 2); EXPECT_EQ(g1.nz, 2);
     EXPECT_EQ(g1.origin, Vec3(0, 0, 0));
-    VoxelGrid g4(a, b, 4.0);
+    MeshGrid g4(a, 2.0);
     EXPECT_DOUBLE_EQ(g4.voxel_size, 1.0);
     EXPECT_EQ(g4.num_voxels(), 1u);
-    VoxelGrid gq(a, b, 0.25);
+    MeshGrid gq(a, 0.125);
     EXPECT_DOUBLE_EQ(gq.voxel_size, 0.25);
     EXPECT_EQ(gq.num_voxels(), 64u);
-    // k = 1e-3 asks for s = 0.0158 (64^3 voxels): capped at 8*24+64 = 256 voxels.
-    VoxelGrid gc(a, b, 1e-3);
-    EXPECT_LE(gc.num_voxels(), 256u);
+    // k = 1e-3 asks for s = 0.0224 (45^3 voxels): capped at 8*12+64 = 160 voxels.
+    MeshGrid gc(a, 1e-3);
+    EXPECT_LE(gc.num_voxels(), 160u);
     EXPECT_GE(gc.num_voxels(), 27u);
-    // Box 2x1x1: lw+lh+wh = 5, so s = sqrt(2*5/24) = 0.6455 -> 4 x 2 x 2 voxels, centred on the box.
+    // Box 2x1x1: lw+lh+wh = 5, so s = sqrt(2*5/12) = 0.9129 -> 3 x 2 x 2 voxels, centred on the box.
     TriangleMesh w = cube_mesh({0, 0, 0}, {2, 1, 1});
-    VoxelGrid g2(w, a, 1.0);
-    EXPECT_DOUBLE_EQ(g2.voxel_size, std::sqrt(10.0 / 24));
-    EXPECT_EQ(g2.nx, 4); EXPECT_EQ(g2.ny, 2); EXPECT_EQ(g2.nz, 2);
-    EXPECT_NEAR(g2.origin.x, 1 - 2 * g2.voxel_size, 1e-15);
+    MeshGrid g2(w, 1.0);
+    EXPECT_DOUBLE_EQ(g2.voxel_size, std::sqrt(10.0 / 12));
+    EXPECT_EQ(g2.nx, 3); EXPECT_EQ(g2.ny, 2); EXPECT_EQ(g2.nz, 2);
+    EXPECT_NEAR(g2.origin.x, 1 - 1.5 * g2.voxel_size, 1e-15);
+    // A pair: each mesh in a grid of its own, as if alone.
+    TriangleMesh b = cube_mesh({0.25, 0.25, 0.25}, {0.75, 0.75, 0.75});
+    VoxelGrid pair(w, b, 1.0);
+    EXPECT_EQ(pair.of(0).voxel_size, g2.voxel_size);
+    EXPECT_EQ(pair.of(0).origin, g2.origin);
+    EXPECT_DOUBLE_EQ(pair.of(1).voxel_size, 0.5 * std::sqrt(0.5));  // box 0.5^3: s = 0.5 sqrt(k/2)
+    EXPECT_EQ(&pair.mesh(1), &b);
     check_coverage(g1);
     check_coverage(gq);
     check_coverage(g2);
+    check_coverage(pair);
 }
 
 TEST(VoxelGrid, IndexCoordsRoundTrip) {
-    TriangleMesh a = cube_mesh({0, 0, 0}, {3, 2, 1}), b;
-    VoxelGrid g(a, b, 0.1);
+    TriangleMesh a = cube_mesh({0, 0, 0}, {3, 2, 1});
+    MeshGrid g(a, 0.1);
     for (size_t v = 0; v < g.num_voxels(); ++v) {
         auto c = g.coords(v);
         ASSERT_EQ(g.index(c[0], c[1], c[2]), v);
@@ -355,17 +370,18 @@ TEST(VoxelGrid, IndexCoordsRoundTrip) {
 
 TEST(VoxelGrid, TrianglesOnVoxelFacesGoToBothVoxels) {
     // Cube grid with s = 0.5 and origin 0: the planes x, y, z = 0.5 are voxel faces.
-    TriangleMesh a = cube_mesh({0, 0, 0}, {1, 1, 1}), b = a;
-    b.triangles.resize(10);  // keep n + m = 24, so s = 0.5
+    TriangleMesh b = cube_mesh({0, 0, 0}, {1, 1, 1});
+    b.triangles.resize(10);  // keep n = 12 (box still the unit cube), so s = 0.5 at k = 0.5
     b.positions.insert(b.positions.end(), {{0.5, 0.1, 0.1}, {0.5, 0.9, 0.2}, {0.5, 0.3, 0.9},   // in x = 0.5
                                            {0.1, 0.5, 0.5}, {0.9, 0.5, 0.5}, {0.5, 0.5, 0.5}});  // on an edge line
     b.triangles.push_back({8, 9, 10});
     b.triangles.push_back({11, 12, 13});
-    VoxelGrid g(a, b, 1.0);
+    MeshGrid g(b, 0.5);
     ASSERT_DOUBLE_EQ(g.voxel_size, 0.5);
-    auto in_plane = g.voxels_of_triangle(1, 10);
+    ASSERT_EQ(g.origin, Vec3(0, 0, 0));
+    auto in_plane = g.voxels_of_triangle(10);
     EXPECT_EQ(in_plane.size(), 8u);  // the x = 0.5 triangle spans all y,z quadrants on both sides
-    auto on_line = g.voxels_of_triangle(1, 11);
+    auto on_line = g.voxels_of_triangle(11);
     EXPECT_EQ(on_line.size(), 8u);   // the segment y = z = 0.5 touches all four voxels around it, twice along x
     check_coverage(g, 40);
 }
@@ -392,8 +408,8 @@ TEST(VoxelGrid, FlatAndDegenerateMeshes) {
         for (Vec3& p : m->positions) p.z = 0;
     }
     VoxelGrid g(flat_a, flat_b);
-    EXPECT_EQ(g.nz, 1);
-    EXPECT_GT(g.nx * g.ny, 4);
+    EXPECT_EQ(g.of(0).nz, 1);
+    EXPECT_GT(g.of(0).nx * g.of(0).ny, 4);
     check_coverage(g);
     check_nearest(g, 0, 200, 7);
     check_nearest(g, 1, 200, 8);
@@ -404,8 +420,8 @@ TEST(VoxelGrid, FlatAndDegenerateMeshes) {
         line.triangles.push_back({uint32_t(3 * i), uint32_t(3 * i + 1), uint32_t(3 * i + 2)});
     }
     VoxelGrid gl(line, line);
-    EXPECT_EQ(gl.ny, 1); EXPECT_EQ(gl.nz, 1);
-    EXPECT_GT(gl.nx, 10);
+    EXPECT_EQ(gl.of(1).ny, 1); EXPECT_EQ(gl.of(1).nz, 1);
+    EXPECT_GT(gl.of(1).nx, 10);
     check_coverage(gl);
     check_nearest(gl, 0, 200, 9);
 
@@ -413,8 +429,8 @@ TEST(VoxelGrid, FlatAndDegenerateMeshes) {
     point.positions = {{1, 2, 3}};
     point.triangles = {{0, 0, 0}, {0, 0, 0}};
     VoxelGrid gp(point, point);
-    EXPECT_EQ(gp.num_voxels(), 1u);
-    EXPECT_GT(gp.voxel_size, 0);
+    EXPECT_EQ(gp.of(0).num_voxels(), 1u);
+    EXPECT_GT(gp.of(0).voxel_size, 0);
     check_coverage(gp);
     VoxelGrid::Nearest r = gp.nearest(1, {4, 6, 3});
     EXPECT_EQ(r.dist2, 25);
@@ -426,7 +442,7 @@ TEST(VoxelGrid, FlatAndDegenerateMeshes) {
     EXPECT_EQ(ge.nearest(0, {0, 0, 0}).dist2, HUGE_VAL);
     EXPECT_EQ(ge.nearest(1, {1, 2, 4}).dist2, 1);
     VoxelGrid gee(empty, empty);
-    EXPECT_EQ(gee.num_voxels(), 1u);
+    EXPECT_EQ(gee.of(0).num_voxels(), 1u);
     EXPECT_EQ(gee.nearest(1, {0, 0, 0}).triangle, UINT32_MAX);
 }
 
@@ -448,7 +464,8 @@ TEST(VoxelGrid, RealMeshNearest) {
     std::mt19937 gen(12);
     TriangleMesh other = random_mesh(gen, 300, -0.5, 0.5, 0.2);  // overlaps spot's box
     VoxelGrid g(spot, other);
-    EXPECT_LE(g.num_voxels(), 8 * (5856 + 300) + 64u);
+    EXPECT_LE(g.of(0).num_voxels(), 8 * 5856 + 64u);
+    EXPECT_LE(g.of(1).num_voxels(), 8 * 300 + 64u);
     check_coverage(g, 6);
     check_nearest(g, 0, 400, 13);
     check_nearest(g, 1, 200, 14);
@@ -464,8 +481,30 @@ TEST(VoxelGrid, BuildTwoLargeMeshes) {
     double diag = a.bounds().diagonal();
     for (Vec3& p : b.positions) p += rnd(gen, -1e-3 * diag, 1e-3 * diag);
     VoxelGrid g(a, b);
-    std::printf("[ info ] grid for 2 x %zu triangles: %d x %d x %d voxels, %zu + %zu assignments\n",
-                a.num_triangles(), g.nx, g.ny, g.nz, g.num_assignments(0), g.num_assignments(1));
-    EXPECT_LE(g.num_voxels(), 8 * 2 * a.num_triangles() + 64);
+    for (int side = 0; side < 2; ++side) {
+        const MeshGrid& m = g.of(side);
+        std::printf("[ info ] grid for %zu triangles: %d x %d x %d voxels, %zu assignments\n", a.num_triangles(), m.nx,
+                    m.ny, m.nz, m.num_assignments());
+        EXPECT_LE(m.num_voxels(), 8 * a.num_triangles() + 64);
+    }
     check_nearest(g, 1, 30, 16);
+}
+
+// A small mesh far from a large one: each keeps the voxels it would have alone (one grid over both
+// would put the large mesh in a voxel or two), and queries from the other mesh's side stay exact.
+TEST(VoxelGrid, MeshesFarApartKeepTheirOwnVoxels) {
+    std::mt19937 gen(17);
+    TriangleMesh big = random_mesh(gen, 3000, -1, 1, 0.05), small = random_mesh(gen, 20, -1, 1, 0.5);
+    big.positions.pop_back();
+    for (Vec3& p : small.positions) p = p * 0.01 + Vec3(300, -200, 100);
+    const VoxelGrid g(small, big);
+    const MeshGrid alone(big);
+    EXPECT_EQ(g.of(1).voxel_size, alone.voxel_size);
+    EXPECT_EQ(g.of(1).num_voxels(), alone.num_voxels());
+    size_t most = 0;
+    for (size_t v = 0; v < g.of(1).num_voxels(); ++v) most = std::max<size_t>(most, g.of(1).end(v) - g.of(1).begin(v));
+    EXPECT_LT(most, big.num_triangles() / 20);
+    check_coverage(g, 6);
+    check_nearest(g, 1, 100, 18);
+    check_nearest(g, 0, 100, 19);
 }

@@ -730,9 +730,10 @@ void draw_view_overlay(const AppState& s, const Scene& scene, const glm::mat4& m
                 // Voxels seen so far at the current step, as wireframe boxes coloured by state.
                 static const int kEdge[12][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3},
                                                  {4, 6}, {5, 7}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+                const MeshGrid& sources = s.scene->grid->of(1 - d);  // the grid the target searches
                 for (const auto& [vox, state] : st.voxels) {
-                    if (vox >= s.scene->grid->num_voxels()) continue;
-                    const Box3 b = s.scene->grid->voxel_box(vox);
+                    if (vox >= sources.num_voxels()) continue;
+                    const Box3 b = sources.voxel_box(vox);
                     ImVec2 q[8];
                     bool ok = true;
                     for (int k = 0; k < 8 && ok; ++k)
