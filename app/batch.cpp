@@ -4,6 +4,8 @@
 #include <exception>
 #include <utility>
 
+#include "report.h"
+
 namespace hlens {
 
 BatchRunner::BatchRunner(const TriangleMesh& reference, std::vector<std::string> paths, const BatchOptions& opt)
@@ -51,6 +53,7 @@ BatchItem BatchRunner::compare(size_t index) const {
         h.cancel = &cancel_;
         item.result = hausdorff(reference_, item.mesh, h, opt_.one_sided);
         item.ok = !item.result.a_to_b.cancelled && !item.result.b_to_a.cancelled;
+        if (item.ok && opt_.stats) item.ok = add_stats(item);
         if (!item.ok) item.error = item.path + ": cancelled";
     } catch (const MeshError& e) {
         item.error = e.what();
@@ -58,8 +61,16 @@ BatchItem BatchRunner::compare(size_t index) const {
         item.unexpected = true;
         item.error = item.path + ": unexpected error: " + e.what();
     }
-    if (!item.ok) item.mesh = TriangleMesh();
+    if (!item.ok) { item.mesh = TriangleMesh(); item.stats.clear(); }
     return item;
+}
+
+bool BatchRunner::add_stats(BatchItem& item) const {
+    StatsOptions o = opt_.stats_options;
+    o.threads = threads_;
+    o.cancel = &cancel_;
+    item.stats = direction_stats(reference_, item.mesh, item.result, opt_.one_sided, o);
+    return std::none_of(item.stats.begin(), item.stats.end(), [](const SurfaceStats& s) { return s.cancelled; });
 }
 
 bool BatchRunner::next(BatchItem& out, std::chrono::milliseconds timeout) {

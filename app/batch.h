@@ -18,6 +18,7 @@
 #include "hausdorff.h"
 #include "mesh.h"
 #include "mesh_io.h"
+#include "surface_stats.h"
 
 namespace hlens {
 
@@ -27,6 +28,10 @@ struct BatchOptions {
     int jobs = 1;              // pairs compared at the same time
     bool one_sided = false;    // h(reference, file) only
     LoadOptions load;
+    // --stats: each pair also gets the surface statistics of each direction (report.h's
+    // direction_stats with these options; threads and cancel are the runner's)
+    bool stats = false;
+    StatsOptions stats_options;
 };
 
 struct BatchItem {
@@ -38,6 +43,7 @@ struct BatchItem {
     std::string error;         // when !ok: the message ("<path>: ...")
     TriangleMesh mesh;         // the file's mesh, when ok
     HausdorffResult result;
+    std::vector<SurfaceStats> stats;  // with BatchOptions::stats: per direction (a_to_b, b_to_a)
 };
 
 class BatchRunner {
@@ -57,6 +63,7 @@ public:
 private:
     void work();
     BatchItem compare(size_t index) const;
+    bool add_stats(BatchItem& item) const;  // false if cancelled
 
     const TriangleMesh& reference_;
     const std::vector<std::string> paths_;

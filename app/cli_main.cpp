@@ -3,7 +3,7 @@
 //   hlens-cli distance A B [--json] [--one-sided] [--mode paper|fast] [--threads N] [--no-weld] [--verify]
 //                          [--units NAME] [--stats] [--histogram N] [--tolerance T] [--export-errors PATH.ply]
 //   hlens-cli trace A B --target I [--json] [--no-weld]
-//   hlens-cli batch REFERENCE FILE... [--json] [--tolerance T] [--jobs N] [--units NAME] ...
+//   hlens-cli batch REFERENCE FILE... [--json] [--tolerance T] [--jobs N] [--units NAME] [--stats] ...
 //   hlens-cli --help | help
 //
 // `distance` prints h(A,B), h(B,A) and the Hausdorff distance (core/hausdorff.h); `trace` runs one
@@ -49,7 +49,7 @@ const char* kUsage =
     "                     [--units NAME] [--stats] [--histogram N] [--tolerance T] [--export-errors PATH.ply]\n"
     "  hlens-cli trace A B --target I [--json] [--no-weld]\n"
     "  hlens-cli batch REFERENCE FILE... [--json] [--tolerance T] [--jobs N] [--one-sided] [--mode paper|fast]\n"
-    "                     [--threads N] [--no-weld] [--units NAME]\n"
+    "                     [--threads N] [--no-weld] [--units NAME] [--stats] [--histogram N]\n"
     "  hlens-cli --help | help\n"
     "\n"
     "distance   exact Hausdorff distance between the triangle meshes A and B (Straub 2007):\n"
@@ -82,10 +82,11 @@ const char* kUsage =
     "\n"
     "batch      compare REFERENCE (as A) with each FILE (as B), printing one line per pair as it\n"
     "           finishes (a file that fails gets a line with its error; the others go on), then a\n"
-    "           summary line; --json, --one-sided, --mode, --threads, --no-weld and --units of distance\n"
-    "           apply to every pair, and\n"
+    "           summary line; --json, --one-sided, --mode, --threads, --no-weld, --units, --stats and\n"
+    "           --histogram of distance apply to every pair, and\n"
     "  --tolerance T exit code 4 if the Hausdorff distance (h(A,B) with --one-sided) of a pair exceeds T\n"
-    "                (\"exceeds\" in its line; every pair is computed in full)\n"
+    "                (\"exceeds\" in its line; every pair is computed in full; with --stats also the\n"
+    "                area and fraction of each surface farther than T)\n"
     "  --jobs N      compare N pairs at the same time (default 1); --threads is then per pair\n"
     "                (default: all cores divided by N)\n"
     "\n"
@@ -149,7 +150,9 @@ bool parse_stats_option(Args& a, const std::string& w, bool has_value, TakeValue
         a.stats = true;
     } else if (w == "--histogram") {
         long long n = parse_integer("--histogram", take_value());
-        if (n < 1 || n > 100000) throw UsageError("--histogram must be between 1 and 100000, got " + std::to_string(n));
+        if (n < 1 || n > kMaxHistogramBins)
+            throw UsageError("--histogram must be between 1 and " + std::to_string(kMaxHistogramBins) + ", got " +
+                             std::to_string(n));
         a.histogram = (int)n;
     } else if (w == "--export-errors") {
         a.export_errors = take_value();
@@ -212,7 +215,7 @@ Args parse_args(int argc, char** argv) {
             long long n = parse_integer("--jobs", take_value());
             if (n < 1 || n > 4096) throw UsageError("--jobs must be between 1 and 4096, got " + std::to_string(n));
             a.jobs = (int)n;
-        } else if (distance && !batch && parse_stats_option(a, w, has_value, take_value)) {
+        } else if (distance && parse_stats_option(a, w, has_value, take_value)) {
         } else if (!distance && w == "--target") {
             a.target = parse_integer("--target", take_value());
             a.has_target = true;
@@ -222,17 +225,18 @@ Args parse_args(int argc, char** argv) {
             a.files.push_back(words[k]);
         }
     }
+    if (a.histogram > 0 && !a.stats) throw UsageError("--histogram needs --stats");
     if (batch) {
         if (a.files.size() < 2)
             throw UsageError("batch needs a reference and at least one mesh file (see hlens-cli --help)");
         if (a.verify) throw UsageError("--verify is not available for batch");
+        if (!a.export_errors.empty()) throw UsageError("--export-errors is not available for batch");
         return a;
     }
     if (a.files.size() != 2)
         throw UsageError(a.command + " needs two mesh files, got " + std::to_string(a.files.size()) +
                          " (see hlens-cli --help)");
     if (!distance && !a.has_target) throw UsageError("trace needs --target I");
-    if (a.histogram > 0 && !a.stats) throw UsageError("--histogram needs --stats");
     return a;
 }
 
@@ -313,23 +317,23 @@ DistanceReportOptions report_options(const Args& args, int threads) {
 
 // ---------------------------------------------------------------- statistics (issue 9)
 
+// The options of surface_stats() that --stats, --histogram and --tolerance give (distance and
+// batch); the error map alone needs no percentiles and no tolerance.
+StatsOptions stats_options(const Args& args) {
+    StatsOptions o;
+    o.threads = args.threads;
+    o.histogram_bins = args.histogram;
+    o.tolerance = args.stats ? args.tolerance : -1;
+    if (!args.stats) o.percentiles.clear();
+    return o;
+}
+
 // Exact surface statistics per direction (core/surface_stats.h), when --stats or --export-errors
 // asks for them; empty otherwise.
 std::vector<SurfaceStats> direction_stats(const Args& args, const TriangleMesh& A, const TriangleMesh& B,
                                           const HausdorffResult& r) {
-    std::vector<SurfaceStats> out;
-    if (!args.stats && args.export_errors.empty()) return out;
-    VoxelGrid grid(A, B);
-    for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
-        StatsOptions o;
-        o.threads = args.threads;
-        o.histogram_bins = args.histogram;
-        o.tolerance = args.stats ? args.tolerance : -1;
-        if (!args.stats) o.percentiles.clear();  // the error map needs no percentiles
-        o.known_max = (side == 0 ? r.a_to_b : r.b_to_a).distance;
-        out.push_back(surface_stats(grid, side, o));
-    }
-    return out;
+    if (!args.stats && args.export_errors.empty()) return {};
+    return hlens::direction_stats(A, B, r, args.one_sided, stats_options(args));
 }
 
 void print_stats(const Args& args, const std::vector<SurfaceStats>& stats, size_t i) {
@@ -556,7 +560,9 @@ void print_batch_item(const Args& args, const BatchItem& item, int threads) {
             std::printf("[%zu] %s: error: %s\n", item.index, item.path.c_str(), item.error.c_str());
         return;
     }
-    Value v = distance_json(*item.reference, item.mesh, item.result, report_options(args, threads));
+    DistanceReportOptions ro = report_options(args, threads);
+    if (args.stats) ro.stats = &item.stats;
+    Value v = distance_json(*item.reference, item.mesh, item.result, ro);
     if (args.json) {
         v.fields.insert(v.fields.begin(), {"index", Value::integer((long long)item.index)});
         print_line(to_json(v));
@@ -566,6 +572,10 @@ void print_batch_item(const Args& args, const BatchItem& item, int threads) {
     std::printf("[%zu] %s: %s = %s%s%s\n", item.index, item.path.c_str(), args.one_sided ? "h(A,B)" : "Hausdorff",
                 g(d).c_str(), relative_text(d, find_field(v, "diagonal")->d).c_str(),
                 args.tolerance >= 0 && d > args.tolerance ? "  EXCEEDS the tolerance" : "");
+    for (size_t i = 0; i < item.stats.size(); ++i) {
+        std::printf("   %s:\n", i == 0 ? "h(A,B)" : "h(B,A)");
+        print_stats(args, item.stats, i);
+    }
 }
 
 void print_batch_summary(const Args& args, const BatchTally& t, size_t files, double seconds) {
@@ -602,6 +612,8 @@ int run_batch(const Args& args) {
     bo.jobs = args.jobs;
     bo.one_sided = args.one_sided;
     bo.load = lo;
+    bo.stats = args.stats;
+    bo.stats_options = stats_options(args);
     const std::vector<std::string> files(args.files.begin() + 1, args.files.end());
     BatchRunner runner(reference, files, bo);
     BatchTally tally;

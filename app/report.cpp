@@ -7,6 +7,7 @@
 #include "conic.h"
 #include "domain_mesh.h"
 #include "regions.h"
+#include "voxel_grid.h"
 
 namespace hlens {
 
@@ -18,6 +19,20 @@ double report_diagonal(const TriangleMesh& A, const TriangleMesh& B) {
 
 double reported_distance(const HausdorffResult& r, bool one_sided) {
     return one_sided ? r.a_to_b.distance : r.hausdorff;
+}
+
+std::vector<SurfaceStats> direction_stats(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
+                                          bool one_sided, const StatsOptions& base) {
+    std::vector<SurfaceStats> out;
+    const VoxelGrid grid(A, B);
+    const int sides = one_sided ? 1 : 2;
+    for (int side = 0; side < sides; ++side) {
+        StatsOptions o = base;
+        o.known_max = (side == 0 ? r.a_to_b : r.b_to_a).distance;
+        if (base.progress) o.progress = [&base, side, sides](double f) { base.progress((side + f) / sides); };
+        out.push_back(surface_stats(grid, side, o));
+    }
+    return out;
 }
 
 // distance / diagonal; null (NaN) when the meshes are one point.

@@ -3,6 +3,7 @@
 // events of one target (`trace --json`, hlens.trace()). Building them in one place keeps the
 // fields and the numbers of the CLI and of Python identical.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,16 @@ struct DistanceReportOptions {
     // direction's object (add_stats_json); null: none
     const std::vector<SurfaceStats>* stats = nullptr;
 };
+
+// The largest number of bins of a histogram (--histogram N, hlens.distance(histogram=N)).
+constexpr int kMaxHistogramBins = 100000;
+
+// The surface statistics of each direction (a_to_b, then b_to_a; a_to_b only when one-sided) of
+// the result `r` of A against B, as --stats reports them: surface_stats() with `base`'s options
+// (threads, percentiles, histogram_bins, tolerance, cancel) and the direction's distance as its
+// known maximum. base.progress, if set, is called with the fraction of both directions together.
+std::vector<SurfaceStats> direction_stats(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
+                                          bool one_sided, const StatsOptions& base);
 
 // The diagonal that "relative" values divide by: of the union of both meshes' bounding boxes (as
 // metro and MeshLab report it).

@@ -133,8 +133,15 @@ int check_threads(int threads, const char* what) {
 
 double parse_tolerance(const py::object& tolerance) {
     if (tolerance.is_none()) return -1;
-    const double t = tolerance.cast<double>();
-    if (!(t >= 0) || !std::isfinite(t)) throw py::value_error("tolerance must be a finite number >= 0");
+    // The CLI's messages for --tolerance, without the dashes.
+    const std::string text = py::str(tolerance);
+    double t = NAN;
+    try {
+        t = tolerance.cast<double>();
+    } catch (const py::cast_error&) {
+    }
+    if (!std::isfinite(t)) throw py::value_error("tolerance needs a number, got '" + text + "'");
+    if (t < 0) throw py::value_error("tolerance must be >= 0, got " + format_double(t, 17));
     return t;
 }
 

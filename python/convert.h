@@ -27,7 +27,7 @@ py::object to_python(const Value& v);
 
 Mode parse_mode(const std::string& mode);
 int check_threads(int threads, const char* what);
-// None -> -1 (no tolerance); otherwise a finite number >= 0.
+// None -> -1 (no tolerance); otherwise a finite number >= 0 (ValueError with the CLI's message).
 double parse_tolerance(const py::object& tolerance);
 // str or os.PathLike -> str.
 std::string fspath(py::handle path);

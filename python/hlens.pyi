@@ -29,6 +29,20 @@ class OneSided:
     seconds: float
     target_max: npt.NDArray[np.float64]  # per triangle: its largest distance (upper bound where not exact)
     target_exact: npt.NDArray[np.bool_]
+    # stats=True only (None otherwise): the fields of `hlens-cli distance --stats` for this direction
+    area: Optional[float]
+    mean: Optional[float]
+    rms: Optional[float]
+    percentiles: Optional[dict[str, float]]      # {'50', '90', '95', '99'}
+    histogram: Optional[dict[str, list[float]]]  # histogram=N: {'edges': N+1, 'area': N}
+    area_above: Optional[float]                  # with a tolerance: the area where d > tolerance
+    fraction_above: Optional[float]
+    stats_error: Optional[dict[str, float]]
+    stats_seconds: Optional[dict[str, Any]]
+    sliver_triangles: Optional[int]              # None if there are none
+    sliver_area: Optional[float]
+    target_mean: Optional[npt.NDArray[np.float64]]  # per triangle: mean distance (0 for a sliver)
+    target_rms: Optional[npt.NDArray[np.float64]]   # per triangle: RMS distance
     def to_dict(self) -> dict[str, Any]: ...
 
 class Result:
@@ -70,12 +84,16 @@ def distance(VA: npt.ArrayLike, FA: npt.ArrayLike, VB: npt.ArrayLike, FB: npt.Ar
     """Exact h(A,B), h(B,A) and the Hausdorff distance, as `hlens-cli distance --json`.
 
     Vertices: any real or integer dtype; triangles: any integer dtype; C or Fortran order, or
-    lists. Bad input raises ValueError. stats/histogram are not available yet (ValueError)."""
+    lists. Bad input raises ValueError. stats=True adds each direction's surface statistics
+    (`hlens-cli distance --stats`; slow: every triangle's full construction) and the per-triangle
+    arrays target_mean and target_rms; histogram=N (with stats) N bins from 0 to the distance."""
 
 def batch(reference: _Path, paths: Sequence[_Path], *, one_sided: bool = False, mode: str = "fast",
-          threads: int = 0, jobs: int = 1, tolerance: Optional[float] = None, weld: bool = True,
-          units: Optional[str] = None) -> BatchIterator:
-    """Compare the reference file with each file, yielding each pair as it finishes."""
+          threads: int = 0, jobs: int = 1, stats: bool = False, tolerance: Optional[float] = None,
+          histogram: int = 0, weld: bool = True, units: Optional[str] = None) -> BatchIterator:
+    """Compare the reference file with each file, yielding each pair as it finishes.
+
+    stats, histogram, tolerance: as for distance() (`hlens-cli batch --stats --histogram N`)."""
 
 def trace(VA: npt.ArrayLike, FA: npt.ArrayLike, VB: npt.ArrayLike, FB: npt.ArrayLike,
           target: int) -> list[dict[str, Any]]:

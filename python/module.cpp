@@ -22,11 +22,54 @@ using namespace hlens::py_bindings;
 
 namespace {
 
-void reject_stats(bool stats, int histogram) {
-    // Per-triangle statistics (mean, RMS, histogram) are being added to the core on another branch.
-    if (stats || histogram != 0)
-        throw py::value_error("stats and histogram are not available in this version of hlens");
+// histogram=: 0 (none) or, with stats, a number of bins as --histogram takes (the CLI's messages).
+int check_histogram(bool stats, int histogram) {
+    if (histogram < 0 || histogram > kMaxHistogramBins)
+        throw py::value_error("histogram must be between 1 and " + std::to_string(kMaxHistogramBins) + ", got " +
+                              std::to_string(histogram));
+    if (histogram > 0 && !stats) throw py::value_error("histogram needs stats");
+    return histogram;
 }
+
+// What stats=True computes: surface_stats() per direction, as `hlens-cli distance --stats`.
+StatsOptions stats_options(int threads, int histogram, double tolerance) {
+    StatsOptions o;
+    o.threads = threads;
+    o.histogram_bins = histogram;
+    o.tolerance = tolerance;
+    return o;
+}
+
+// job.fraction from the core's progress callbacks (called from worker threads): the distance
+// takes [0, split] of the run, the statistics (when asked for) the rest; it only ever grows.
+class ProgressSplit {
+public:
+    ProgressSplit(Job& job, bool one_sided, double split) : job_(job), one_sided_(one_sided), split_(split) {}
+
+    // hausdorff() reports each direction from 0 to 1, a->b first: a fraction falling back well
+    // below the last one means b->a began (as the CLI's progress bar reads it).
+    void distance(double f) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (f < last_ - 0.5) direction_ = 1;
+        last_ = f;
+        raise(split_ * (one_sided_ ? f : (direction_ + f) / 2));
+    }
+    void stats(double f) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        raise(split_ + (1 - split_) * f);
+    }
+
+private:
+    void raise(double overall) {
+        if (overall > job_.fraction) job_.fraction = overall;
+    }
+    Job& job_;
+    const bool one_sided_;
+    const double split_;
+    std::mutex mutex_;
+    int direction_ = 0;
+    double last_ = 0;
+};
 
 DistanceReportOptions report_options(bool one_sided, Mode mode, int threads, const py::object& units,
                                      double tolerance) {
@@ -50,32 +93,29 @@ py::tuple load(py::handle path, bool weld) {
 
 Result distance(py::handle VA, py::handle FA, py::handle VB, py::handle FB, bool one_sided, const std::string& mode,
                 int threads, bool stats, py::object tolerance, int histogram, py::object progress, py::object units) {
-    reject_stats(stats, histogram);
+    const int bins = check_histogram(stats, histogram);
     const TriangleMesh A = mesh_from_arrays(VA, FA, "A"), B = mesh_from_arrays(VB, FB, "B");
     HausdorffOptions opt;
     opt.mode = parse_mode(mode);
     opt.threads = check_threads(threads, "threads");
-    const DistanceReportOptions ro = report_options(one_sided, opt.mode, threads, units, parse_tolerance(tolerance));
+    DistanceReportOptions ro = report_options(one_sided, opt.mode, threads, units, parse_tolerance(tolerance));
     HausdorffResult r;
+    std::vector<SurfaceStats> st;
     run_blocking(
         [&](Job& job) {
+            // The statistics (the full construction of every triangle) take most of the time.
+            ProgressSplit split(job, one_sided, stats ? 0.05 : 1.0);
             opt.cancel = &job.cancel;
-            // hausdorff() reports each direction from 0 to 1, a->b first, from several worker
-            // threads: a fraction falling back well below the last one means b->a began (as the
-            // CLI's progress bar reads it).
-            std::mutex mutex;
-            int direction = 0;
-            double last = 0;
-            opt.progress = [&](double f) {
-                std::lock_guard<std::mutex> lock(mutex);
-                if (f < last - 0.5) direction = 1;
-                last = f;
-                const double overall = one_sided ? f : (direction + f) / 2;
-                if (overall > job.fraction) job.fraction = overall;
-            };
+            opt.progress = [&](double f) { split.distance(f); };
             r = hausdorff(A, B, opt, one_sided);
+            if (!stats) return;
+            StatsOptions so = stats_options(opt.threads, bins, ro.tolerance);
+            so.cancel = &job.cancel;
+            so.progress = [&](double f) { split.stats(f); };
+            st = direction_stats(A, B, r, one_sided, so);
         },
         progress);
+    if (stats) ro.stats = &st;
     return make_result(A, B, r, ro);
 }
 
@@ -109,7 +149,9 @@ public:
                            .add("error", Value::string(item.error));
             return py::cast(std::move(f));
         }
-        Result r = make_result(*reference_, item.mesh, item.result, ro_);
+        DistanceReportOptions ro = ro_;
+        if (!item.stats.empty()) ro.stats = &item.stats;
+        Result r = make_result(*reference_, item.mesh, item.result, ro);
         r.report.fields.insert(r.report.fields.begin(), {"index", Value::integer((long long)item.index)});
         return py::cast(std::move(r));
     }
@@ -121,8 +163,10 @@ private:
 };
 
 BatchIterator batch(py::handle reference, py::iterable paths, bool one_sided, const std::string& mode, int threads,
-                    int jobs, py::object tolerance, bool weld, py::object units) {
+                    int jobs, bool stats, py::object tolerance, int histogram, bool weld, py::object units) {
     BatchOptions bo;
+    bo.stats = stats;
+    bo.stats_options = stats_options(0, check_histogram(stats, histogram), parse_tolerance(tolerance));
     bo.mode = parse_mode(mode);
     bo.threads = check_threads(threads, "threads");
     if (jobs < 1 || jobs > 4096) throw py::value_error("jobs must be between 1 and 4096, got " + std::to_string(jobs));
@@ -175,23 +219,32 @@ PYBIND11_MODULE(hlens, m) {
           "raises ValueError (messages start with 'A: ' or 'B: ').\n\n"
           "one_sided: h(A,B) only. mode: 'fast' or 'paper' (same result). threads: 0 = all cores.\n"
           "tolerance: adds Result.exceeds (the distance > tolerance). units: a label passed through.\n"
+          "stats: the exact surface statistics of each direction, as `hlens-cli distance --stats`: area,\n"
+          "mean, rms, percentiles ('50', '90', '95', '99'), stats_error, stats_seconds (attributes of\n"
+          "OneSided and fields of to_dict()), and per triangle OneSided.target_mean and target_rms (numpy).\n"
+          "With a tolerance also area_above and fraction_above (where d > tolerance). Slow: the full\n"
+          "construction of every triangle (paper mode's time at least).\n"
+          "histogram: with stats, N > 0 equal bins from 0 to each direction's distance (histogram:\n"
+          "{'edges': N+1, 'area': N}); 0: none.\n"
           "progress: called with a fraction in [0, 1] from this thread while it runs.\n"
-          "stats, histogram: not available yet (ValueError if asked for).\n"
           "The GIL is released while it runs; Ctrl-C stops it with KeyboardInterrupt.");
 
     py::class_<BatchIterator>(m, "BatchIterator", "The results of hlens.batch(), in the order the pairs finish.")
         .def("__iter__", [](BatchIterator& it) -> BatchIterator& { return it; })
         .def("__next__", &BatchIterator::next);
     m.def("batch", &batch, py::arg("reference"), py::arg("paths"), py::kw_only(), py::arg("one_sided") = false,
-          py::arg("mode") = "fast", py::arg("threads") = 0, py::arg("jobs") = 1, py::arg("tolerance") = py::none(),
-          py::arg("weld") = true, py::arg("units") = py::none(),
-          "batch(reference, paths, *, one_sided=False, mode='fast', threads=0, jobs=1, tolerance=None,\n"
-          "      weld=True, units=None) -> iterator of Result | BatchFailure\n\n"
+          py::arg("mode") = "fast", py::arg("threads") = 0, py::arg("jobs") = 1, py::arg("stats") = false,
+          py::arg("tolerance") = py::none(), py::arg("histogram") = 0, py::arg("weld") = true,
+          py::arg("units") = py::none(),
+          "batch(reference, paths, *, one_sided=False, mode='fast', threads=0, jobs=1, stats=False,\n"
+          "      tolerance=None, histogram=0, weld=True, units=None) -> iterator of Result | BatchFailure\n\n"
           "Compares the reference file (as A) with each file of `paths` (as B), like `hlens-cli batch`:\n"
           "the reference is read once, `jobs` pairs run at a time (threads is per pair; 0: all cores\n"
           "divided among the jobs), and each item comes out as its pair finishes: a Result (its\n"
           "`index` and `path` say which file) or, for a file that cannot be read, a BatchFailure with\n"
-          "its error; the other files go on. A bad reference raises ValueError at once.");
+          "its error; the other files go on. A bad reference raises ValueError at once.\n"
+          "stats, histogram, tolerance: as for distance(); each Result equals that pair's line of\n"
+          "`hlens-cli batch --json` with the same options.");
 
     bind_trace(m);
 }

@@ -9,13 +9,25 @@ namespace hlens::py_bindings {
 
 namespace {
 
-OneSided make_one_sided(const OneSidedResult& r, const Value& report) {
+// Per triangle of `s`: f(its TriangleStats), as a float64 array; None without statistics.
+template <class F>
+py::object per_triangle(const SurfaceStats* s, F f) {
+    if (!s) return py::none();
+    py::array_t<double> a((py::ssize_t)s->triangles.size());
+    for (size_t i = 0; i < s->triangles.size(); ++i) a.mutable_at(i) = f(s->triangles[i]);
+    return std::move(a);
+}
+
+// One direction; `stats` is its statistics, or null.
+OneSided make_one_sided(const OneSidedResult& r, const Value& report, const SurfaceStats* stats) {
     OneSided o;
     o.report = report;
     o.target_max = py::array_t<double>((py::ssize_t)r.target_max.size(), r.target_max.data());
     py::array_t<bool> exact((py::ssize_t)r.target_exact.size());
     for (size_t i = 0; i < r.target_exact.size(); ++i) exact.mutable_at(i) = r.target_exact[i] != 0;
     o.target_exact = exact;
+    o.target_mean = per_triangle(stats, [](const TriangleStats& t) { return t.mean(); });
+    o.target_rms = per_triangle(stats, [](const TriangleStats& t) { return t.rms(); });
     return o;
 }
 
@@ -41,8 +53,10 @@ Result make_result(const TriangleMesh& A, const TriangleMesh& B, const Hausdorff
                    const DistanceReportOptions& opt) {
     Result res;
     res.report = distance_json(A, B, r, opt);
-    res.a_to_b = py::cast(make_one_sided(r.a_to_b, *find_field(res.report, "a_to_b")));
-    res.b_to_a = opt.one_sided ? py::none() : py::cast(make_one_sided(r.b_to_a, *find_field(res.report, "b_to_a")));
+    auto stats = [&](size_t side) { return opt.stats && side < opt.stats->size() ? &(*opt.stats)[side] : nullptr; };
+    res.a_to_b = py::cast(make_one_sided(r.a_to_b, *find_field(res.report, "a_to_b"), stats(0)));
+    res.b_to_a = opt.one_sided ? py::none()
+                               : py::cast(make_one_sided(r.b_to_a, *find_field(res.report, "b_to_a"), stats(1)));
     return res;
 }
 
@@ -59,11 +73,28 @@ void bind_result(py::module_& m) {
         {"exact_targets", "triangles whose maximum was computed exactly"},
         {"exact_solves", "exact constructions run (fast mode: pieces and whole triangles)"},
         {"seconds", "time of this direction"},
+        // stats=True (None otherwise), as `hlens-cli distance --stats`
+        {"area", "stats: area of the measured mesh (sliver triangles left out)"},
+        {"mean", "stats: area-weighted mean distance"},
+        {"rms", "stats: root mean square distance"},
+        {"percentiles", "stats: {'50', '90', '95', '99'}: the distance below which that share of the area lies"},
+        {"histogram", "stats with histogram=N: {'edges': N+1 distances, 'area': N areas}"},
+        {"area_above", "stats with a tolerance: the area farther than the tolerance"},
+        {"fraction_above", "stats with a tolerance: area_above / area"},
+        {"stats_error", "stats: {'area', 'integral_d2', 'integral_d_estimate', 'percentile'}: error bounds"},
+        {"stats_seconds", "stats: {'first_pass', 'percentiles', 'percentile_passes', 'rerun_targets'}"},
+        {"sliver_triangles", "stats: triangles too thin for a domain mesh, left out (None if there are none)"},
+        {"sliver_area", "stats: their area (None if there are none)"},
     });
     one.def_readonly("target_max", &OneSided::target_max,
                      "numpy float64 array: per triangle of the measured mesh, its largest distance to the other "
                      "mesh; exact where target_exact, otherwise an upper bound below the result (fast mode)");
     one.def_readonly("target_exact", &OneSided::target_exact, "numpy bool array: target_max is exact");
+    one.def_readonly("target_mean", &OneSided::target_mean,
+                     "stats: numpy float64 array, per triangle of the measured mesh its mean distance to the other "
+                     "mesh (0 for a sliver triangle); None without stats");
+    one.def_readonly("target_rms", &OneSided::target_rms,
+                     "stats: numpy float64 array, per triangle its RMS distance (0 for a sliver); None without stats");
     to_dict(one, "The same fields as the CLI's JSON object for this direction (without the arrays).");
     one.def("__repr__", [](const OneSided& o) { return "OneSided(" + to_json(o.report) + ")"; });
 

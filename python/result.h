@@ -17,6 +17,7 @@ struct OneSided {
     Value report;                  // the CLI's "a_to_b" or "b_to_a" object
     py::array target_max;          // float64 per triangle of the measured mesh
     py::array target_exact;        // bool per triangle: target_max is exact (else an upper bound)
+    py::object target_mean, target_rms;  // with stats: float64 per triangle; otherwise None
 };
 
 struct Result {
@@ -28,7 +29,8 @@ struct BatchFailure {
     Value report;                  // {"index", "path", "error"}: the CLI's batch error line
 };
 
-// Needs the GIL (it makes numpy arrays).
+// Needs the GIL (it makes numpy arrays). With opt.stats, each direction's statistics are in its
+// report and its per-triangle mean and RMS in target_mean and target_rms.
 Result make_result(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
                    const DistanceReportOptions& opt);
 

@@ -212,6 +212,15 @@ std::string sub(const std::string& json, const std::string& key) {
     return "{}";
 }
 
+// The text of the value of `key` as written (an object, array, number, true, false or null; not a
+// string holding ',' or '}'), or "<missing>".
+std::string raw(const std::string& json, const std::string& key) {
+    const size_t p = value_pos(json, key);
+    if (p == std::string::npos) return "<missing>";
+    if (json[p] == '{' || json[p] == '[') return sub(json, key);
+    return json.substr(p, json.find_first_of(",}", p) - p);
+}
+
 std::vector<double> numbers(const std::string& array) {  // "[x, y, z]"
     std::vector<double> v;
     const char* p = array.c_str() + 1;
@@ -843,11 +852,53 @@ TEST_F(Cli, StatsAndVerdictInTheSharedReport) {
     EXPECT_EQ(r.code, 4) << r.err;
     EXPECT_NE(r.out.find("\"stopped_early\": true"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("\"units\": \"mm\""), std::string::npos) << r.out;
-    for (const char* option : {"--stats", "--export-errors"}) {
-        std::vector<std::string> args{"batch", a, b, option};
-        if (std::string(option) == "--export-errors") args.push_back("x.ply");
-        expect_error(args, "unknown option");
+    expect_error({"batch", a, b, "--export-errors", "x.ply"}, "--export-errors is not available for batch");
+    expect_error({"batch", a, b, "--histogram", "3"}, "--histogram needs --stats");
+    expect_error({"batch", a, b, "--stats", "--histogram", "0"}, "--histogram must be between 1 and 100000, got 0");
+}
+
+// batch --stats gives each pair the statistics `distance --stats` gives that pair, digit for digit
+// (17 significant digits: the same doubles), with two pairs at a time (one thread each, where
+// distance uses all cores), a histogram and a tolerance.
+TEST_F(Cli, BatchStatsEqualDistanceStats) {
+    const std::string a = write("ra.obj", obj_text(random_grid(6, 1.0, 0.0, 0.0, 0.25, 12345)));
+    const std::vector<std::string> files{write("b0.obj", obj_text(random_grid(5, 1.1, -0.05, 0.03, 0.3, 777))),
+                                         write("b1.obj", obj_text(random_grid(4, 0.9, 0.05, 0.0, 0.2, 99)))};
+    const std::vector<std::string> opts{"--json", "--stats", "--histogram", "3", "--tolerance", "0.15"};
+    std::vector<std::string> args{"batch", a, files[0], files[1], "--jobs", "2"};
+    args.insert(args.end(), opts.begin(), opts.end());
+    const Outcome batch = run(args);
+    const std::vector<std::string> out = lines(batch.out);
+    ASSERT_EQ(out.size(), 3u) << batch.out << batch.err;
+    int want_code = 0;
+    for (size_t k = 0; k < 2; ++k) {
+        const std::string& line = out[k];
+        ASSERT_TRUE(is_json_object(line)) << line;
+        const size_t i = (size_t)num(line, "index");
+        ASSERT_LT(i, files.size());
+        SCOPED_TRACE(files[i]);
+        std::vector<std::string> single{"distance", a, files[i]};
+        single.insert(single.end(), opts.begin(), opts.end());
+        const Outcome d = run(single);
+        ASSERT_TRUE(d.code == 0 || d.code == 4) << d.err;
+        if (d.code == 4) want_code = 4;
+        EXPECT_EQ(raw(line, "exceeds"), d.code == 4 ? "true" : "false");
+        for (const char* dir : {"a_to_b", "b_to_a"}) {
+            const std::string got = sub(line, dir), want = sub(d.out, dir);
+            for (const char* key : {"area", "mean", "rms", "percentiles", "histogram", "area_above", "fraction_above",
+                                    "stats_error", "sliver_triangles", "sliver_area"})
+                EXPECT_EQ(raw(got, key), raw(want, key)) << dir << "." << key;
+            EXPECT_NE(raw(got, "mean"), "<missing>") << got;
+            EXPECT_EQ(numbers(sub(sub(got, "histogram"), "area")).size(), 3u) << got;
+            for (const char* key : {"percentile_passes", "rerun_targets"})
+                EXPECT_EQ(raw(sub(got, "stats_seconds"), key), raw(sub(want, "stats_seconds"), key)) << dir << "." << key;
+        }
     }
+    EXPECT_EQ(batch.code, want_code) << batch.err;
+    // the readable form shows them too
+    const Outcome text = run({"batch", a, files[0], "--stats"});
+    EXPECT_EQ(text.code, 0) << text.err;
+    EXPECT_NE(text.out.find("h(B,A):\n   area "), std::string::npos) << text.out;
 }
 
 // On a pair of bumpy grids: each direction's area is its mesh's area (cross products here), the

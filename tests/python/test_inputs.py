@@ -91,10 +91,8 @@ def test_bad_options():
         hlens.distance(V, F, W, F, mode="exact")
     with pytest.raises(ValueError, match="threads must be between"):
         hlens.distance(V, F, W, F, threads=-1)
-    with pytest.raises(ValueError, match="tolerance must be"):
+    with pytest.raises(ValueError, match="tolerance needs a number, got 'nan'"):
         hlens.distance(V, F, W, F, tolerance=float("nan"))
-    with pytest.raises(ValueError, match="not available"):
-        hlens.distance(V, F, W, F, stats=True)
 
 
 @pytest.mark.parametrize("name,content", [

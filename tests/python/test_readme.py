@@ -62,3 +62,15 @@ def test_venv_install_is_offline_and_works(tmp_path):
                        capture_output=True, text=True, env={"PATH": "/usr/bin:/bin"})
     assert p.returncode == 0, p.stderr
     assert p.stdout.startswith("load(path")
+
+
+def test_readme_stats_example_runs(monkeypatch, capsys):
+    monkeypatch.chdir(SOURCE_DIR)
+    scope = {}
+    exec(compile(block("python-stats"), "README stats example", "exec"), scope)
+    out = capsys.readouterr().out
+    ab, t = scope["ab"], scope["t"]
+    assert "mean " in out and "% of A's area is farther than 0.1" in out
+    assert sum(ab.histogram["area"]) == pytest.approx(ab.area, rel=1e-12)
+    assert 0 < ab.fraction_above < 1 and ab.mean <= ab.rms <= ab.distance
+    assert ab.target_mean[t] == ab.target_mean.max() <= ab.target_rms[t] <= ab.target_max[t] * (1 + 1e-12)
