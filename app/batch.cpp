@@ -9,7 +9,7 @@
 namespace hlens {
 
 BatchRunner::BatchRunner(const TriangleMesh& reference, std::vector<std::string> paths, const BatchOptions& opt)
-    : reference_(reference), paths_(std::move(paths)), opt_(opt) {
+    : reference_(reference), reference_grid_(std::make_shared<const MeshGrid>(reference)), paths_(std::move(paths)), opt_(opt) {
     const int jobs = (int)std::clamp<size_t>(opt.jobs < 1 ? 1 : (size_t)opt.jobs, 1, std::max<size_t>(1, paths_.size()));
     const int cores = (int)std::max(1u, std::thread::hardware_concurrency());
     threads_ = opt.threads > 0 ? opt.threads : std::max(1, cores / jobs);
@@ -51,9 +51,10 @@ BatchItem BatchRunner::compare(size_t index) const {
         h.mode = opt_.mode;
         h.threads = threads_;
         h.cancel = &cancel_;
-        item.result = hausdorff(reference_, item.mesh, h, opt_.one_sided);
+        const VoxelGrid grid(reference_grid_, std::make_shared<const MeshGrid>(item.mesh));
+        item.result = hausdorff(grid, h, opt_.one_sided);
         item.ok = !item.result.a_to_b.cancelled && !item.result.b_to_a.cancelled;
-        if (item.ok && opt_.stats) item.ok = add_stats(item);
+        if (item.ok && opt_.stats) item.ok = add_stats(item, grid);
         if (!item.ok) item.error = item.path + ": cancelled";
     } catch (const MeshError& e) {
         item.error = e.what();
@@ -65,11 +66,11 @@ BatchItem BatchRunner::compare(size_t index) const {
     return item;
 }
 
-bool BatchRunner::add_stats(BatchItem& item) const {
+bool BatchRunner::add_stats(BatchItem& item, const VoxelGrid& grid) const {
     StatsOptions o = opt_.stats_options;
     o.threads = threads_;
     o.cancel = &cancel_;
-    item.stats = direction_stats(reference_, item.mesh, item.result, opt_.one_sided, o);
+    item.stats = direction_stats(grid, item.result, opt_.one_sided, o);
     return std::none_of(item.stats.begin(), item.stats.end(), [](const SurfaceStats& s) { return s.cancelled; });
 }
 

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <deque>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -19,6 +20,7 @@
 #include "mesh.h"
 #include "mesh_io.h"
 #include "surface_stats.h"
+#include "voxel_grid.h"
 
 namespace hlens {
 
@@ -63,9 +65,10 @@ public:
 private:
     void work();
     BatchItem compare(size_t index) const;
-    bool add_stats(BatchItem& item) const;  // false if cancelled
+    bool add_stats(BatchItem& item, const VoxelGrid& grid) const;  // false if cancelled
 
     const TriangleMesh& reference_;
+    std::shared_ptr<const MeshGrid> reference_grid_;  // built once, shared by every pair
     const std::vector<std::string> paths_;
     BatchOptions opt_;
     int threads_ = 1;

@@ -23,8 +23,12 @@ double reported_distance(const HausdorffResult& r, bool one_sided) {
 
 std::vector<SurfaceStats> direction_stats(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
                                           bool one_sided, const StatsOptions& base) {
+    return direction_stats(VoxelGrid(A, B), r, one_sided, base);
+}
+
+std::vector<SurfaceStats> direction_stats(const VoxelGrid& grid, const HausdorffResult& r, bool one_sided,
+                                          const StatsOptions& base) {
     std::vector<SurfaceStats> out;
-    const VoxelGrid grid(A, B);
     const int sides = one_sided ? 1 : 2;
     for (int side = 0; side < sides; ++side) {
         StatsOptions o = base;

@@ -40,6 +40,9 @@ constexpr int kMaxHistogramBins = 100000;
 // known maximum. base.progress, if set, is called with the fraction of both directions together.
 std::vector<SurfaceStats> direction_stats(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
                                           bool one_sided, const StatsOptions& base);
+// The same on the pair's grids already built.
+std::vector<SurfaceStats> direction_stats(const VoxelGrid& grid, const HausdorffResult& r, bool one_sided,
+                                          const StatsOptions& base);
 
 // The diagonal that "relative" values divide by: of the union of both meshes' bounding boxes (as
 // metro and MeshLab report it).

@@ -119,7 +119,14 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
 
 HausdorffResult hausdorff(const TriangleMesh& A, const TriangleMesh& B, const HausdorffOptions& opt, bool one_sided_only) {
     auto t0 = Clock::now();
-    VoxelGrid grid(A, B);
+    const VoxelGrid grid(A, B);
+    HausdorffResult r = hausdorff(grid, opt, one_sided_only);
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return r;
+}
+
+HausdorffResult hausdorff(const VoxelGrid& grid, const HausdorffOptions& opt, bool one_sided_only) {
+    auto t0 = Clock::now();
     HausdorffResult r;
     r.a_to_b = one_sided(grid, 0, opt);
     if (!one_sided_only) {

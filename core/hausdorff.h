@@ -56,6 +56,8 @@ struct HausdorffResult {
 // h(A,B) and, unless one_sided_only, h(B,A) and the symmetric distance.
 HausdorffResult hausdorff(const TriangleMesh& A, const TriangleMesh& B, const HausdorffOptions& opt = {},
                           bool one_sided_only = false);
+// The same on grids already built (A = grid.mesh(0), B = grid.mesh(1)); `seconds` excludes the grids.
+HausdorffResult hausdorff(const VoxelGrid& grid, const HausdorffOptions& opt = {}, bool one_sided_only = false);
 
 const char* mode_name(Mode m);
 

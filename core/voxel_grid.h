@@ -2,6 +2,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "mesh.h"
@@ -82,22 +83,26 @@ private:
 };
 
 // The grids of a pair of meshes: mesh 0 (A) and mesh 1 (B), each in its own MeshGrid. A target of
-// mesh `side` looks for its sources in of(1 - side).
+// mesh `side` looks for its sources in of(1 - side). A mesh's grid can be shared by several pairs
+// (hlens-cli batch indexes its reference once).
 class VoxelGrid {
 public:
     // Keeps pointers to a and b: they must outlive it.
     VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double triangles_per_voxel = 1.0)
-        : grid_{MeshGrid(a, triangles_per_voxel), MeshGrid(b, triangles_per_voxel)} {}
+        : grid_{std::make_shared<const MeshGrid>(a, triangles_per_voxel), std::make_shared<const MeshGrid>(b, triangles_per_voxel)} {}
+    // From grids already built (their meshes must outlive them).
+    VoxelGrid(std::shared_ptr<const MeshGrid> a, std::shared_ptr<const MeshGrid> b) : grid_{std::move(a), std::move(b)} {}
 
     using Nearest = MeshGrid::Nearest;
     // The grid listing the triangles of mesh `side` (0 = a, 1 = b).
-    const MeshGrid& of(int side) const { return grid_[side]; }
+    const MeshGrid& of(int side) const { return *grid_[side]; }
+    const std::shared_ptr<const MeshGrid>& shared(int side) const { return grid_[side]; }
     // Nearest point of mesh `side` to p: of(side).nearest(p, hint).
-    Nearest nearest(int side, const Vec3& p, uint32_t hint = UINT32_MAX) const { return grid_[side].nearest(p, hint); }
-    const TriangleMesh& mesh(int side) const { return grid_[side].mesh(); }
+    Nearest nearest(int side, const Vec3& p, uint32_t hint = UINT32_MAX) const { return grid_[side]->nearest(p, hint); }
+    const TriangleMesh& mesh(int side) const { return grid_[side]->mesh(); }
 
 private:
-    MeshGrid grid_[2];
+    std::shared_ptr<const MeshGrid> grid_[2];
 };
 
 }  // namespace hlens

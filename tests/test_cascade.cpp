@@ -158,3 +158,24 @@ TEST(Cascade, RealMeshesAgainstTheirSimplifications) {
         expect_fast_equals_paper(A, B, std::string(name) + " vs 15%", std::string(name) == "woody.obj");
     }
 }
+
+// hlens-cli batch indexes its reference once: a grid shared by several pairs gives each pair the
+// result of a grid built for it alone, in both modes.
+TEST(Cascade, SharedReferenceGridGivesEachPairItsOwnResult) {
+    const TriangleMesh ref = height_field(12, [](double x, double y) { return 0.2 * std::sin(3 * x) * y; });
+    const auto ref_grid = std::make_shared<const MeshGrid>(ref);
+    for (double lift : {0.01, 0.3}) {
+        const TriangleMesh other = shifted(height_field(5, [](double x, double) { return 0.1 * x; }), {0.1, 0, lift});
+        for (Mode m : {Mode::Fast, Mode::Paper}) {
+            HausdorffOptions opt;
+            opt.mode = m;
+            const HausdorffResult alone = hausdorff(ref, other, opt);
+            const HausdorffResult shared = hausdorff(VoxelGrid(ref_grid, std::make_shared<const MeshGrid>(other)), opt);
+            EXPECT_EQ(shared.a_to_b.distance, alone.a_to_b.distance);
+            EXPECT_EQ(shared.b_to_a.distance, alone.b_to_a.distance);
+            EXPECT_EQ(shared.a_to_b.upper, alone.a_to_b.upper);
+            EXPECT_EQ(shared.b_to_a.target, alone.b_to_a.target);
+            EXPECT_GT(shared.hausdorff, lift * 0.5);
+        }
+    }
+}
