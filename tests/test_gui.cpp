@@ -1227,6 +1227,36 @@ std::vector<std::string> with(std::vector<std::string> a, const std::vector<std:
     return a;
 }
 
+
+// Every probe of the state (exact, on the demo's A) has the value expected(triangle) and is
+// coloured as the colour bar at (value - lo) / (hi - lo), not as the bar 0.4 away.
+void expect_probes_on_the_bar(const std::string& json, const Image& im, double lo, double hi,
+                              const std::function<double(long)>& expected) {
+    std::vector<int> bar = int_list(json, "bar");
+    ASSERT_EQ(bar.size(), 4u);
+    ASSERT_GT(bar[2], 100);
+    // The colour bar's colour at t in [0, 1] (its middle row).
+    auto bar_colour = [&](double t) {
+        return im.at(bar[0] + 1 + (int)std::lround(std::clamp(t, 0.0, 1.0) * (bar[2] - 3)), bar[1] + bar[3] / 2);
+    };
+    std::vector<Probe> ps = probes(json);
+    ASSERT_GE(ps.size(), 3u) << json;
+    for (const Probe& p : ps) {
+        ASSERT_GE(p.triangle, 0);
+        ASSERT_LT(p.triangle, 512);
+        EXPECT_TRUE(p.exact);
+        EXPECT_EQ(p.value, expected(p.triangle)) << "triangle " << p.triangle;
+        const double t = (p.value - lo) / (hi - lo);
+        const std::array<int, 3> want = bar_colour(t), other = bar_colour(t < 0.5 ? t + 0.4 : t - 0.4);
+        std::vector<std::array<int, 3>> px = square(im, p.x, p.y, std::min(p.clear, 4));
+        const long match = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, want, 12); });
+        const long wrong = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, other, 12); });
+        EXPECT_GT(match, (long)px.size() * 3 / 4)
+            << "triangle " << p.triangle << " (t = " << t << ") at " << p.x << "," << p.y << ": " << im.at(p.x, p.y)[0]
+            << " " << im.at(p.x, p.y)[1] << " " << im.at(p.x, p.y)[2] << " vs " << want[0] << " " << want[1] << " " << want[2];
+        EXPECT_LT(wrong, (long)px.size() / 4) << "triangle " << p.triangle << " looks like t = " << (t < 0.5 ? t + 0.4 : t - 0.4);
+    }
+}
 }  // namespace
 
 // Fill-in disabled: fast mode solved only the triangles that can reach h(A,B); every other one is
@@ -1331,30 +1361,7 @@ TEST(GuiExactMap, WaitColoursEveryTriangleByItsExactMaximum) {
 
     Image im = load_png(png);
     ASSERT_EQ(im.w, 800);
-    std::vector<int> bar = int_list(o.out, "bar");
-    ASSERT_EQ(bar.size(), 4u);
-    ASSERT_GT(bar[2], 100);
-    // The colour bar's colour at t in [0, 1] (its middle row).
-    auto bar_colour = [&](double t) {
-        return im.at(bar[0] + 1 + (int)std::lround(std::clamp(t, 0.0, 1.0) * (bar[2] - 3)), bar[1] + bar[3] / 2);
-    };
-    std::vector<Probe> ps = probes(o.out);
-    ASSERT_GE(ps.size(), 3u) << o.out;
-    for (const Probe& p : ps) {
-        ASSERT_GE(p.triangle, 0);
-        ASSERT_LT(p.triangle, 512);
-        EXPECT_TRUE(p.exact);
-        EXPECT_EQ(p.value, exact.max[p.triangle]) << "triangle " << p.triangle;
-        const double t = (p.value - lo) / (hi - lo);
-        const std::array<int, 3> want = bar_colour(t), other = bar_colour(t < 0.5 ? t + 0.4 : t - 0.4);
-        std::vector<std::array<int, 3>> px = square(im, p.x, p.y, std::min(p.clear, 4));
-        const long match = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, want, 12); });
-        const long wrong = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, other, 12); });
-        EXPECT_GT(match, (long)px.size() * 3 / 4)
-            << "triangle " << p.triangle << " (t = " << t << ") at " << p.x << "," << p.y << ": " << im.at(p.x, p.y)[0]
-            << " " << im.at(p.x, p.y)[1] << " " << im.at(p.x, p.y)[2] << " vs " << want[0] << " " << want[1] << " " << want[2];
-        EXPECT_LT(wrong, (long)px.size() / 4) << "triangle " << p.triangle << " looks like t = " << (t < 0.5 ? t + 0.4 : t - 0.4);
-    }
+    expect_probes_on_the_bar(o.out, im, lo, hi, [&](long t) { return exact.max[t]; });
     // No triangle is left grey (the hatch's greys do not appear on the mesh).
     std::vector<int> vp = int_list(o.out, "viewport");
     ASSERT_EQ(vp.size(), 4u);
@@ -1477,4 +1484,125 @@ TEST(Gui, UnitsLabelTheColourBar) {
     char want[64];
     std::snprintf(want, sizeof want, "\"%.4g mm\"", num(o.out, "hi", em));
     EXPECT_EQ(raw_value(o.out, "hi_label", em), want);
+}
+
+// ---- Exact surface statistics in the debugger (issue 9, item 3)
+
+namespace {
+constexpr std::array<int, 3> kPlotBars = {230, 179, 0};   // ImGui's PlotHistogram colour (dark style)
+
+// hlens-cli distance demo_a demo_b --stats --histogram 20 --json [extra...]: the GUI's options.
+Outcome cli_stats(const fs::path& dir, std::vector<std::string> extra = {}) {
+    std::vector<std::string> argv = {kCli, "distance", kDemoA, kDemoB, "--stats", "--histogram", "20", "--json"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    Outcome c = run(argv, dir);
+    EXPECT_TRUE(c.code == 0 || c.code == 4) << c.err;
+    return c;
+}
+}  // namespace
+
+// --stats: the sidebar's statistics of both directions are hlens-cli's, digit for digit (the state
+// line prints them as hlens-cli does), and the histograms are drawn; without it nothing is computed.
+TEST(GuiStats, StatisticsAreTheClisToTheDigit) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "stats.png";
+    Outcome o = run_gui({"--stats"}, png, dir, {}, "800x900");
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t st = o.out.find("\"stats\": {");
+    ASSERT_NE(st, std::string::npos) << o.out;
+    EXPECT_EQ(raw_value(o.out, "wanted", st), "true");
+    EXPECT_EQ(raw_value(o.out, "ready", st), "true");
+    Outcome c = cli_stats(dir);
+    for (const char* d : {"a_to_b", "b_to_a"}) {
+        const std::string gui = raw_value(o.out, d, st), cli = raw_value(c.out, d);
+        ASSERT_FALSE(gui.empty()) << o.out;
+        for (const char* key : {"area", "mean", "rms", "percentiles", "histogram"}) {
+            EXPECT_FALSE(raw_value(cli, key).empty()) << key;
+            EXPECT_EQ(raw_value(gui, key), raw_value(cli, key)) << d << " " << key;
+        }
+    }
+    Image im = load_png(png);
+    const int vx = int_list(o.out, "viewport")[0];
+    EXPECT_GT(count(im, 0, 0, vx, im.h, [](auto p) { return near(p, kPlotBars, 3); }), 400) << "the histograms";
+
+    fs::path png2 = dir / "default.png";
+    Outcome d = run_gui({}, png2, dir, {}, "800x900");
+    ASSERT_EQ(d.code, 0) << d.err;
+    const size_t st2 = d.out.find("\"stats\": {");
+    EXPECT_EQ(raw_value(d.out, "wanted", st2), "false");
+    EXPECT_EQ(raw_value(d.out, "ready", st2), "false");
+    Image im2 = load_png(png2);
+    EXPECT_EQ(count(im2, 0, 0, vx, im2.h, [](auto p) { return near(p, kPlotBars, 3); }), 0);
+}
+
+namespace {
+// The faces of an error map written by hlens-cli --export-errors (ASCII PLY): per face, its
+// max, mean and RMS distance; per vertex, its distance.
+struct ErrorMap {
+    std::vector<std::array<double, 3>> face;   // max, mean, rms
+    std::vector<double> vertex;
+    std::string header;
+};
+ErrorMap read_error_ply(const fs::path& p) {
+    ErrorMap m;
+    std::ifstream in(p);
+    size_t nv = 0, nf = 0;
+    for (std::string line; std::getline(in, line) && line != "end_header";) {
+        m.header += line + "\n";
+        std::istringstream ls(line);
+        std::string w, what;
+        ls >> w >> what;
+        if (w == "element" && what == "vertex") ls >> nv;
+        if (w == "element" && what == "face") ls >> nf;
+    }
+    for (size_t v = 0; v < nv; ++v) {
+        double x, y, z, q, d;
+        in >> x >> y >> z >> q >> d;
+        m.vertex.push_back(d);
+    }
+    for (size_t f = 0; f < nf; ++f) {
+        int n, a, b, c;
+        double q, mx, mean, rms;
+        in >> n >> a >> b >> c >> q >> mx >> mean >> rms;
+        m.face.push_back({mx, mean, rms});
+    }
+    return in ? m : ErrorMap{};
+}
+}  // namespace
+
+// --color-by mean: every triangle is coloured by its exact mean distance (the mean_distance of
+// hlens-cli --export-errors), on a range from the least to the largest mean; the picture differs
+// from --color-by max (the default).
+TEST(GuiStats, ColourByMeanFollowsEachTrianglesMean) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "mean.png", png_max = dir / "max.png";
+    Outcome o = run_gui(with({"--color-by", "mean"}, kZoomed), png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    Outcome m = run_gui(with({"--color-by", "max"}, kZoomed), png_max, dir);
+    ASSERT_EQ(m.code, 0) << m.err;
+    const size_t em = o.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos) << o.out;
+    EXPECT_EQ(raw_value(o.out, "color_by", em), "\"mean\"");
+    EXPECT_EQ(raw_value(o.out, "shows", em), "\"mean\"");
+    EXPECT_EQ(raw_value(m.out, "shows"), "\"max\"");
+
+    Outcome c = run({kCli, "distance", kDemoA, kDemoB, "--export-errors", (dir / "cli.ply").string()}, dir);
+    ASSERT_EQ(c.code, 0) << c.err;
+    const ErrorMap cli = read_error_ply(dir / "cli-ab.ply");
+    ASSERT_EQ(cli.face.size(), 512u);
+    double lo = HUGE_VAL, hi = 0;
+    for (const auto& f : cli.face) lo = std::min(lo, f[1]), hi = std::max(hi, f[1]);
+    EXPECT_NEAR(num(o.out, "lo", em), lo, 1e-7 * hi);
+    EXPECT_NEAR(num(o.out, "hi", em), hi, 1e-7 * hi);
+
+    Image im = load_png(png), im_max = load_png(png_max);
+    expect_probes_on_the_bar(o.out, im, lo, hi, [&](long t) { return cli.face[t][1]; });
+    // The pictures differ where the mesh is (the means are below the maxima, on another range).
+    std::vector<int> vp = int_list(o.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u);
+    long differ = 0, total = 0;
+    for (int y = vp[3] / 5; y < vp[3] * 9 / 10; ++y)
+        for (int x = vp[0]; x < im.w; ++x, ++total)
+            differ += !near(im.at(x, y), im_max.at(x, y), 12);
+    EXPECT_GT(differ, total / 5) << "--color-by mean looks like --color-by max";
 }

@@ -1,0 +1,60 @@
+#include "stats_flow.h"
+
+#include <cstdio>
+
+namespace hlens::gui {
+
+const char* colour_by_name(ColourBy c) { return c == ColourBy::Mean ? "mean" : c == ColourBy::Rms ? "rms" : "max"; }
+
+namespace {
+void start(AppState& s, StatsJob& job) {
+    StatsView& v = s.stats;
+    v.dir = {};
+    v.cancelled = false;
+    v.failed.clear();
+    const double distance[2] = {s.result.a_to_b.distance, s.result.b_to_a.distance};
+    job.start(s.scene, distance, s.tolerance);
+}
+}  // namespace
+
+bool update_stats(AppState& s, const Requests& req, StatsJob& job) {
+    StatsView& v = s.stats;
+    const bool current = s.scene && job.scene() == s.scene.get();
+    if (req.stats_cancel && job.running()) {
+        job.cancel();
+        v.cancelled = true;
+    }
+    bool arrived = false;
+    if (auto out = job.take_result(); out && current && s.computed) {
+        if (out->dir[0]) {
+            v.dir = out->dir;
+            v.tolerance = out->tolerance;
+            arrived = true;
+        } else if (!out->error.empty()) {
+            v.failed = out->error;
+            std::fprintf(stderr, "hlens: statistics: %s\n", v.failed.c_str());
+        }
+    }
+    if (req.stats_start) {   // (again: at the current tolerance)
+        v.wanted = true;
+        if (s.computed && s.scene && s.scene->grid) start(s, job);
+    }
+    if (job.running() && !current && !job.cancelling()) job.cancel();   // older meshes
+    const bool missing = v.wanted && s.computed && s.scene && s.scene->grid && !v.ready() && !v.cancelled && v.failed.empty();
+    if (missing && !job.running()) start(s, job);
+    v.running = job.running() && current;
+    v.progress = job.progress();
+    v.phase = job.phase();
+    v.elapsed = job.elapsed_seconds();
+    return arrived;
+}
+
+std::vector<double> colour_values(const AppState& s, int d) {
+    const SurfaceStats* st = s.stats.dir[d].get();
+    if (s.colour_by == ColourBy::Max || !st || st->triangles.size() != s.exact[d].value.size()) return s.exact[d].value;
+    std::vector<double> v(st->triangles.size());
+    for (size_t t = 0; t < v.size(); ++t) v[t] = s.colour_by == ColourBy::Mean ? st->triangles[t].mean() : st->triangles[t].rms();
+    return v;
+}
+
+}  // namespace hlens::gui

@@ -1,0 +1,21 @@
+// The exact surface statistics in the debugger: when they are computed (StatsJob, on request),
+// and what the colour map shows per triangle (the exact maximum, or the mean or RMS distance
+// over the triangle once the statistics are known).
+#pragma once
+#include <vector>
+
+#include "app_state.h"
+
+namespace hlens::gui {
+
+// Acts on the statistics' requests (req.stats_start / stats_cancel), takes the job's outcome
+// (for the current meshes only) and starts the job when the statistics are wanted and missing.
+// Returns true when new statistics arrived.
+bool update_stats(AppState& s, const Requests& req, StatsJob& job);
+
+// Per triangle of mesh d, the value the colour map shows (s.colour_by): the exact maximum (-1:
+// not yet exact), or the mean / RMS distance over the triangle; while the statistics are not
+// known, the exact maxima.
+std::vector<double> colour_values(const AppState& s, int d);
+
+}  // namespace hlens::gui
