@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "test_support.h"
+#include "test_meshes.h"
+#include "integrals.h"
+#include "target_maxima.h"
 #include "mesh_io.h"
 #include "target_solver.h"
 #include "voxel_grid.h"
@@ -1605,4 +1608,87 @@ TEST(GuiStats, ColourByMeanFollowsEachTrianglesMean) {
         for (int x = vp[0]; x < im.w; ++x, ++total)
             differ += !near(im.at(x, y), im_max.at(x, y), 12);
     EXPECT_GT(differ, total / 5) << "--color-by mean looks like --color-by max";
+}
+
+namespace {
+// The points of the state's "tolerance"."curve" (world coordinates).
+std::vector<hlens::Vec3> curve_points(const std::string& json) {
+    const size_t tol = json.find("\"tolerance\": {");
+    std::vector<double> v = num_list(json, "curve", tol == std::string::npos ? 0 : tol);
+    std::vector<hlens::Vec3> p;
+    for (size_t i = 0; i + 2 < v.size(); i += 3) p.push_back({v[i], v[i + 1], v[i + 2]});
+    return p;
+}
+const std::vector<std::string> kTolerance22 = {"--direction", "ba", "--target", "22", "--step", "end", "--tolerance", "0.14"};
+constexpr std::array<int, 3> kCurve = {255, 60, 50};      // the curve d = T in the domain view
+constexpr std::array<int, 3> kOutline = {255, 31, 26};    // triangles above T in the 3D view (1, 0.12, 0.1)
+}  // namespace
+
+// The tolerance in the domain view of target 22 of B (46 domains): every point the state gives on
+// the drawn curve d = T is at distance T from A (brute force over A's triangles), to 1e-9; the
+// target's area above T is the core's (area_above_levels on its finished domain mesh); the curve
+// and the shading are drawn, and the 3D view outlines the triangles whose maximum exceeds T.
+TEST(GuiStats, ToleranceCurveLiesWhereTheDistanceIsT) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "tolerance.png";
+    Outcome o = run_gui(kTolerance22, png, dir, {}, "1200x800");
+    ASSERT_EQ(o.code, 0) << o.err;
+    const double T = 0.14;
+    const size_t tol = o.out.find("\"tolerance\": {");
+    ASSERT_NE(tol, std::string::npos) << o.out;
+    EXPECT_EQ(num(o.out, "value", tol), T);
+    EXPECT_GE(num(o.out, "curve_arcs", tol), 4);
+    const hlens::TriangleMesh A = hlens::load_mesh(kDemoA), B = hlens::load_mesh(kDemoB);
+    const std::vector<hlens::Vec3> pts = curve_points(o.out);
+    ASSERT_GE(pts.size(), 12u) << o.out;
+    for (const hlens::Vec3& p : pts) EXPECT_NEAR(hlens_test::brute_distance(p, A), T, 1e-9 * T) << p.x << " " << p.y << " " << p.z;
+
+    hlens::VoxelGrid grid(A, B);
+    hlens::TargetSolver ts(grid, 1, 22);
+    ts.run();
+    const double sc = ts.frame().scale;
+    const double core = hlens::area_above_levels(*ts.domain_mesh(), {T * T / (sc * sc)})[0] * sc * sc;
+    const double gui = num(raw_value(o.out, "target", tol), "area_above"), view = num(raw_value(o.out, "view", tol), "area_above");
+    EXPECT_NEAR(gui, core, 1e-12 * sc * sc);
+    EXPECT_NEAR(view, core, 1e-12 * sc * sc);
+    EXPECT_GT(core, 0.1 * num(raw_value(o.out, "target", tol), "area"));
+    EXPECT_LT(core, 0.9 * num(raw_value(o.out, "target", tol), "area"));
+
+    Image im = load_png(png);
+    std::vector<int> dv = int_list(o.out, "domain_view"), vp = int_list(o.out, "viewport");
+    ASSERT_EQ(dv.size(), 4u);
+    EXPECT_GT(count(im, dv[0], dv[1], dv[0] + dv[2], dv[1] + dv[3], [](auto p) { return near(p, kCurve, 4); }), 60) << "the curve";
+    EXPECT_GT(count(im, vp[0], vp[1], vp[0] + vp[2], vp[1] + vp[3], [](auto p) { return shaded(p, kOutline, 10); }), 60)
+        << "the outlines of the triangles above T";
+}
+
+// The measured mesh's area above T: with --stats it is hlens-cli's --stats --tolerance T, to the
+// digit; the triangles outlined are those whose exact maximum exceeds T; without a tolerance none.
+TEST(GuiStats, MeshAreaAboveTIsTheClis) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "mesh.png";
+    Outcome o = run_gui({"--direction", "ba", "--tolerance", "0.14", "--stats"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t tol = o.out.find("\"tolerance\": {");
+    ASSERT_NE(tol, std::string::npos) << o.out;
+    const std::string mesh = raw_value(o.out, "mesh", tol);
+    Outcome c = cli_stats(dir, {"--tolerance", "0.14"});
+    EXPECT_EQ(raw_value(mesh, "area_above"), raw_value(raw_value(c.out, "b_to_a"), "area_above")) << mesh;
+    EXPECT_EQ(raw_value(mesh, "fraction_above"), raw_value(raw_value(c.out, "b_to_a"), "fraction_above"));
+    const hlens::TriangleMesh A = hlens::load_mesh(kDemoA), B = hlens::load_mesh(kDemoB);
+    hlens::VoxelGrid grid(A, B);
+    const hlens::TargetMaxima mx = hlens::exact_target_maxima(grid, 1);
+    EXPECT_EQ((long)num(mesh, "triangles_above"), std::count_if(mx.max.begin(), mx.max.end(), [](double v) { return v > 0.14; }));
+    EXPECT_GT(num(mesh, "triangles_above"), 0);
+
+    Outcome d = run_gui({"--direction", "ba"}, dir / "plain.png", dir);
+    ASSERT_EQ(d.code, 0) << d.err;
+    EXPECT_EQ(raw_value(d.out, "tolerance"), "null");
+    Image with = load_png(png), without = load_png(dir / "plain.png");
+    std::vector<int> vp = int_list(o.out, "viewport");
+    auto outlined = [&](const Image& im) {
+        return count(im, vp[0], vp[1], vp[0] + vp[2], vp[1] + vp[3], [](auto p) { return shaded(p, kOutline, 10); });
+    };
+    EXPECT_GT(outlined(with), 60);
+    EXPECT_EQ(outlined(without), 0);
 }

@@ -10,6 +10,7 @@
 #include "compute.h"
 #include "scene.h"
 #include "stepper.h"
+#include "tolerance_cut.h"
 
 namespace hlens::gui {
 
@@ -114,6 +115,12 @@ struct AppState {
     bool show_colormap = true;
     ColourBy colour_by = ColourBy::Max;
     double tolerance = -1;        // the tolerance T (world units; < 0: none)
+    double tolerance_input = 0;   // the tolerance field (applied while its checkbox is on)
+    // The selected target cut at T (its finished domain mesh, from its trace) and the domain
+    // view's mesh at the current step cut at T, each with what it was computed for.
+    ToleranceCut target_cut, view_cut;
+    const void* target_cut_of = nullptr;
+    unsigned long view_cut_revision = 0;
     StatsView stats;
     std::string errors_path = "hlens-errors.ply";   // "Export error map": PATH-ab.ply, PATH-ba.ply
     std::string errors_status;    // the paths written, or the error

@@ -1,6 +1,7 @@
 #include "args.h"
 
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <initializer_list>
 
@@ -12,7 +13,7 @@ const char* usage_text() {
     return "usage: hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]\n"
            "             [--step N|end] [--event-log] [--graph] [--overlay] [--case NAME [--epsilon E]] [--export-case DIR]\n"
            "             [--exact-colormap on|off|wait] [--units NAME] [--stats]\n"
-           "             [--color-by max|mean|rms]\n"
+           "             [--color-by max|mean|rms] [--tolerance T]\n"
            "\n"
            "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
            "(assets/demo_a.obj, assets/demo_b.obj).\n"
@@ -44,6 +45,9 @@ const char* usage_text() {
            "  --color-by max|mean|rms\n"
            "                      the colour map's value per triangle: the exact maximum (default), or\n"
            "                      the exact mean or RMS distance over it (these compute the statistics)\n"
+           "  --tolerance T       the tolerance field: triangles whose maximum exceeds T outlined red, the\n"
+           "                      area above T for the mesh (with the statistics) and the target; in the\n"
+           "                      domain view the curve d = T and the part above it shaded\n"
            "\n"
            "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --right-drag X0,Y0,X1,Y1,\n"
            "  --wheel X,Y,STEPS, --hover X,Y, --wait FRAMES, --key home|f1|f12|left|right|space\n"
@@ -177,6 +181,12 @@ Options parse_args(const std::vector<std::string>& args) {
             o.exact_colormap = parse_choice(value(), {"off", "on", "wait"}, "--exact-colormap expects on, off or wait");
         } else if (a == "--color-by") {
             o.color_by = parse_choice(value(), {"max", "mean", "rms"}, "--color-by expects max, mean or rms");
+        } else if (a == "--tolerance") {
+            const std::string& v = value();
+            char* end = nullptr;
+            o.tolerance = std::strtod(v.c_str(), &end);
+            if (v.empty() || !end || *end || !(o.tolerance >= 0) || !std::isfinite(o.tolerance))
+                throw UsageError("--tolerance expects a distance >= 0, got '" + v + "'");
         } else if (a == "--stats") {
             o.stats = true;
         } else if (a == "--units") {

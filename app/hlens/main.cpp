@@ -160,6 +160,7 @@ void refresh_range(AppState& s, int d, const std::vector<double>& values, bool r
 void show_values(AppState& s, Scene& scene, int d, bool reset) {
     const std::vector<double> v = colour_values(s, d);
     scene.set_values(d, v);
+    scene.set_maxima(d, s.exact[d].value);
     refresh_range(s, d, v, reset);
 }
 
@@ -295,6 +296,31 @@ std::string stats_json(const AppState& s) {
     return to_json(o);
 }
 
+// The tolerance: the measured mesh's area above it (exact with the statistics at T, "bound": the
+// triangles whose maximum exceeds it), the selected target's (its domain mesh cut at T), and
+// points on the curve d = T as the domain view draws it (else of the target's final mesh), world
+// coordinates.
+std::string tolerance_json(const AppState& s) {
+    if (s.tolerance < 0) return "null";
+    const MeshAbove m = mesh_above(s, s.direction);
+    Value o = Value::object().add("value", Value::number(s.tolerance));
+    o.add("mesh", Value::object()
+                      .add("area", Value::number(m.area))
+                      .add("area_above", m.exact >= 0 ? Value::number(m.exact) : Value())
+                      .add("fraction_above", m.exact >= 0 ? Value::number(m.fraction) : Value())
+                      .add("triangles_above", Value::integer((long long)m.triangles))
+                      .add("bound", Value::number(m.bound)));
+    const ToleranceCut& t = s.target_cut;
+    o.add("target", t.t >= 0 ? Value::object().add("area", Value::number(t.area)).add("area_above", Value::number(t.area_above)) : Value());
+    const bool view = s.stepper.open && s.stepper.active() && s.view_cut.t >= 0;
+    const ToleranceCut& c = view ? s.view_cut : t;
+    if (view) o.add("view", Value::object().add("area", Value::number(c.area)).add("area_above", Value::number(c.area_above)));
+    Value pts = Value::array();
+    for (const Vec3& p : c.samples) pts.push(Value::array().push(Value::number(p.x)).push(Value::number(p.y)).push(Value::number(p.z)));
+    o.add("curve_arcs", Value::integer((long long)c.curve.size())).add("curve", std::move(pts));
+    return to_json(o);
+}
+
 // The state behind a headless picture, one JSON line.
 std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin, int fb_w, int fb_h, const int vp[4],
                        const std::string& probes) {
@@ -342,6 +368,7 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
         j += "}";
     }
     j += ", \"stats\": " + stats_json(s);
+    j += ", \"tolerance\": " + tolerance_json(s);
     j += ", \"camera\": {\"yaw\": " + json_number(cam.yaw) + ", \"pitch\": " + json_number(cam.pitch) +
          ", \"distance\": " + json_number(cam.distance) + ", \"pivot\": [" + json_number(cam.pivot.x) + ", " +
          json_number(cam.pivot.y) + ", " + json_number(cam.pivot.z) + "], \"origin\": [" + json_number(origin.x) + ", " +
@@ -556,6 +583,8 @@ int main(int argc, char** argv) {
     s.demo = opt.demo;
     s.units = opt.units;
     s.colour_by = (ColourBy)opt.color_by;
+    s.tolerance = opt.tolerance;
+    s.tolerance_input = std::max(0.0, opt.tolerance);
     s.stats.wanted = opt.stats || s.colour_by != ColourBy::Max;
     s.scripted_input = !opt.input.empty();
     for (int side = 0; side < 2; ++side) {
@@ -866,6 +895,8 @@ int main(int argc, char** argv) {
             p.hi = s.range[s.direction].hi;
             p.selected = (int)s.selected[s.direction];
             p.hatch = std::round(hatch_period(ImGui::GetFontSize()) * fbs_x);
+            p.tolerance = s.computed ? (float)s.tolerance : -1.0f;
+            p.outline = std::max(1.5f, 0.12f * ImGui::GetFontSize() * fbs_x);
             return p;
         };
 

@@ -13,6 +13,7 @@
 #include "cases.h"
 #include "colormap.h"
 #include "stats_panel.h"
+#include "tolerance_panel.h"
 
 namespace hlens::gui {
 
@@ -694,6 +695,7 @@ void draw_panels(AppState& s) {
     direction_section(s);
     colormap_section(s);
     draw_stats_section(s);
+    draw_tolerance_section(s);
     meshes_section(s);
     open_section(s);
     cases_section(s);

@@ -57,4 +57,20 @@ std::vector<double> colour_values(const AppState& s, int d) {
     return v;
 }
 
+MeshAbove mesh_above(const AppState& s, int d) {
+    MeshAbove r;
+    if (!s.scene || s.tolerance < 0) return r;
+    const TriangleMesh& m = s.scene->mesh[d];
+    const std::vector<double>& mx = s.exact[d].value;
+    for (size_t t = 0; t < m.num_triangles(); ++t) {
+        const auto c = m.corners(t);
+        const double a = 0.5 * norm(cross(c[1] - c[0], c[2] - c[0]));
+        r.area += a;
+        if (t < mx.size() && mx[t] > s.tolerance) ++r.triangles, r.bound += a;
+    }
+    const SurfaceStats* st = s.stats.dir[d].get();
+    if (st && s.stats.tolerance == s.tolerance) r.exact = st->area_above, r.fraction = st->fraction_above;
+    return r;
+}
+
 }  // namespace hlens::gui

@@ -18,4 +18,14 @@ bool update_stats(AppState& s, const Requests& req, StatsJob& job);
 // known, the exact maxima.
 std::vector<double> colour_values(const AppState& s, int d);
 
+// Mesh d against the tolerance T (s.tolerance >= 0): the triangles whose exact maximum exceeds T
+// (outlined in the 3D view) and their area, a bound of the area above T; and that area itself
+// once the statistics were computed at T (else -1).
+struct MeshAbove {
+    size_t triangles = 0;
+    double bound = 0, area = 0;       // the triangles' area, the mesh's area
+    double exact = -1, fraction = -1; // from the statistics at T
+};
+MeshAbove mesh_above(const AppState& s, int d);
+
 }  // namespace hlens::gui
