@@ -1692,3 +1692,41 @@ TEST(GuiStats, MeshAreaAboveTIsTheClis) {
     EXPECT_GT(outlined(with), 60);
     EXPECT_EQ(outlined(without), 0);
 }
+
+// --export-errors PATH.ply: the debugger writes the error maps of both directions, byte for byte
+// hlens-cli --export-errors's, and they read back as PLY with every face's max, mean and RMS
+// (the statistics the sidebar shows) and every vertex's distance.
+TEST(GuiStats, ExportWritesTheClisErrorMaps) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "export.png";
+    const std::string path = (dir / "gui.ply").string();
+    Outcome o = run_gui({"--export-errors", path}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const std::string maps = raw_value(o.out, "error_maps");
+    EXPECT_EQ(raw_value(maps, "ok"), "true") << o.out;
+    Outcome c = run({kCli, "distance", kDemoA, kDemoB, "--export-errors", (dir / "cli.ply").string()}, dir);
+    ASSERT_EQ(c.code, 0) << c.err;
+    for (const char* side : {"ab", "ba"}) {
+        const fs::path gui = dir / ("gui-" + std::string(side) + ".ply"), cli = dir / ("cli-" + std::string(side) + ".ply");
+        ASSERT_TRUE(fs::exists(gui)) << gui;
+        EXPECT_EQ(read_file(gui), read_file(cli)) << side;
+        const ErrorMap m = read_error_ply(gui);
+        ASSERT_EQ(m.face.size(), std::string(side) == "ab" ? 512u : 32u);
+        EXPECT_NE(m.header.find("property float quality"), std::string::npos);
+        EXPECT_EQ(m.vertex.size(), std::string(side) == "ab" ? 289u : 25u);
+        for (const auto& f : m.face) {
+            EXPECT_GE(f[0], f[2]);   // max >= RMS >= mean >= 0
+            EXPECT_GE(f[2], f[1]);
+            EXPECT_GE(f[1], 0);
+        }
+    }
+    // The file's maxima are the exact maxima of the colour map.
+    const hlens::TriangleMesh A = hlens::load_mesh(kDemoA), B = hlens::load_mesh(kDemoB);
+    hlens::VoxelGrid grid(A, B);
+    const hlens::TargetMaxima mx = hlens::exact_target_maxima(grid, 0);
+    const ErrorMap ab = read_error_ply(dir / "gui-ab.ply");
+    for (size_t t = 0; t < ab.face.size(); ++t) EXPECT_NEAR(ab.face[t][0], mx.max[t], 1e-12) << t;
+    // A bad path is a usage error.
+    Outcome bad = run({kGui, "--export-errors", "x.obj"}, dir);
+    EXPECT_EQ(bad.code, 2);
+}

@@ -125,6 +125,8 @@ struct AppState {
     std::string errors_path = "hlens-errors.ply";   // "Export error map": PATH-ab.ply, PATH-ba.ply
     std::string errors_status;    // the paths written, or the error
     bool errors_ok = false;
+    bool errors_pending = false;  // export once the statistics are known (--export-errors)
+    std::vector<std::string> errors_written;
     int up_axis = 2;
 
     std::string demo_path[2];     // the built-in demo pair

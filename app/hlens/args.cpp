@@ -14,6 +14,7 @@ const char* usage_text() {
            "             [--step N|end] [--event-log] [--graph] [--overlay] [--case NAME [--epsilon E]] [--export-case DIR]\n"
            "             [--exact-colormap on|off|wait] [--units NAME] [--stats]\n"
            "             [--color-by max|mean|rms] [--tolerance T]\n"
+           "             [--export-errors PATH.ply]\n"
            "\n"
            "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
            "(assets/demo_a.obj, assets/demo_b.obj).\n"
@@ -48,6 +49,9 @@ const char* usage_text() {
            "  --tolerance T       the tolerance field: triangles whose maximum exceeds T outlined red, the\n"
            "                      area above T for the mesh (with the statistics) and the target; in the\n"
            "                      domain view the curve d = T and the part above it shaded\n"
+           "  --export-errors PATH.ply\n"
+           "                      once the statistics are known, write the error maps as hlens-cli\n"
+           "                      --export-errors does: PATH-ab.ply (A) and PATH-ba.ply (B)\n"
            "\n"
            "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --right-drag X0,Y0,X1,Y1,\n"
            "  --wheel X,Y,STEPS, --hover X,Y, --wait FRAMES, --key home|f1|f12|left|right|space\n"
@@ -187,6 +191,11 @@ Options parse_args(const std::vector<std::string>& args) {
             o.tolerance = std::strtod(v.c_str(), &end);
             if (v.empty() || !end || *end || !(o.tolerance >= 0) || !std::isfinite(o.tolerance))
                 throw UsageError("--tolerance expects a distance >= 0, got '" + v + "'");
+        } else if (a == "--export-errors") {
+            o.export_errors = value();
+            const std::string& e = o.export_errors;
+            if (e.size() < 5 || e.compare(e.size() - 4, 4, ".ply") != 0)
+                throw UsageError("--export-errors needs a path ending in .ply, got '" + e + "'");
         } else if (a == "--stats") {
             o.stats = true;
         } else if (a == "--units") {

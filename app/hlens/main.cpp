@@ -369,6 +369,11 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
     }
     j += ", \"stats\": " + stats_json(s);
     j += ", \"tolerance\": " + tolerance_json(s);
+    if (!s.errors_status.empty()) {
+        Value w = Value::array();
+        for (const std::string& p : s.errors_written) w.push(Value::string(p));
+        j += ", \"error_maps\": " + to_json(Value::object().add("ok", Value::boolean(s.errors_ok)).add("written", std::move(w)));
+    }
     j += ", \"camera\": {\"yaw\": " + json_number(cam.yaw) + ", \"pitch\": " + json_number(cam.pitch) +
          ", \"distance\": " + json_number(cam.distance) + ", \"pivot\": [" + json_number(cam.pivot.x) + ", " +
          json_number(cam.pivot.y) + ", " + json_number(cam.pivot.z) + "], \"origin\": [" + json_number(origin.x) + ", " +
@@ -585,7 +590,8 @@ int main(int argc, char** argv) {
     s.colour_by = (ColourBy)opt.color_by;
     s.tolerance = opt.tolerance;
     s.tolerance_input = std::max(0.0, opt.tolerance);
-    s.stats.wanted = opt.stats || s.colour_by != ColourBy::Max;
+    s.stats.wanted = opt.stats || s.colour_by != ColourBy::Max || !opt.export_errors.empty();
+    if (!opt.export_errors.empty()) s.errors_path = opt.export_errors, s.errors_pending = true;
     s.scripted_input = !opt.input.empty();
     for (int side = 0; side < 2; ++side) {
         s.demo_path[side] = std::string(HLENS_ASSET_DIR) + (side == 0 ? "/demo_a.obj" : "/demo_b.obj");
@@ -982,6 +988,13 @@ int main(int argc, char** argv) {
         if (req.export_case) export_selected(s);
         if (update_stats(s, req, stats_job) || req.colours)
             for (int d = 0; d < 2 && s.computed; ++d) show_values(s, scene, d, true);
+        if ((req.export_errors || (s.errors_pending && s.stats.ready())) && s.computed && !export_error_maps(s)) {
+            std::fprintf(stderr, "hlens: %s\n", s.errors_status.c_str());
+            if (s.headless && !opt.export_errors.empty()) {
+                exit_code = 2;
+                break;
+            }
+        }
         if (req.recompute) {
             s.computed = s.cancelled = false;
             s.range[0].valid = s.range[1].valid = false;   // (start_compute clears the exact maps)

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "report.h"
+
 namespace hlens::gui {
 
 const char* colour_by_name(ColourBy c) { return c == ColourBy::Mean ? "mean" : c == ColourBy::Rms ? "rms" : "max"; }
@@ -55,6 +57,30 @@ std::vector<double> colour_values(const AppState& s, int d) {
     std::vector<double> v(st->triangles.size());
     for (size_t t = 0; t < v.size(); ++t) v[t] = s.colour_by == ColourBy::Mean ? st->triangles[t].mean() : st->triangles[t].rms();
     return v;
+}
+
+bool export_error_maps(AppState& s) {
+    if (!s.stats.ready()) {
+        s.errors_pending = true;
+        s.stats.wanted = true;
+        return true;
+    }
+    s.errors_pending = false;
+    s.errors_written.clear();
+    s.errors_ok = false;
+    const std::string& p = s.errors_path;
+    if (p.size() < 5 || p.compare(p.size() - 4, 4, ".ply") != 0) {
+        s.errors_status = "the error map's path must end in .ply, got '" + p + "'";
+        return false;
+    }
+    try {
+        s.errors_written = write_error_maps(p, s.scene->mesh[0], s.scene->mesh[1], {*s.stats.dir[0], *s.stats.dir[1]}, false);
+        s.errors_status = "wrote " + s.errors_written[0] + "\nand " + s.errors_written[1];
+        s.errors_ok = true;
+    } catch (const std::exception& e) {
+        s.errors_status = std::string("export failed: ") + e.what();
+    }
+    return s.errors_ok;
 }
 
 MeshAbove mesh_above(const AppState& s, int d) {

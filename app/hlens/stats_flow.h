@@ -18,6 +18,11 @@ bool update_stats(AppState& s, const Requests& req, StatsJob& job);
 // known, the exact maxima.
 std::vector<double> colour_values(const AppState& s, int d);
 
+// "Export map" (and --export-errors): the error maps of both directions as hlens-cli
+// --export-errors writes them (report.h, write_error_maps), into s.errors_path; waits for the
+// statistics (starting them) when they are not known yet. False: the export failed.
+bool export_error_maps(AppState& s);
+
 // Mesh d against the tolerance T (s.tolerance >= 0): the triangles whose exact maximum exceeds T
 // (outlined in the 3D view) and their area, a bound of the area above T; and that area itself
 // once the statistics were computed at T (else -1).

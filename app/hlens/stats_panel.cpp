@@ -80,7 +80,7 @@ void stats_controls(AppState& s) {
     if (!v.failed.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "statistics failed: %s", v.failed.c_str());
 }
 
-[[maybe_unused]] void export_controls(AppState& s) {
+void export_controls(AppState& s) {
     ImGui::SetNextItemWidth(-7 * em());
     ImGui::InputText("##errors_path", &s.errors_path);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("PATH.ply: writes PATH-ab.ply (A's error map) and PATH-ba.ply (B's)");
@@ -107,6 +107,7 @@ void draw_stats_section(AppState& s) {
     stats_controls(s);
     if (!s.stats.ready()) return;
     for (int d = 0; d < 2; ++d) direction_stats(*s.stats.dir[d], d);
+    export_controls(s);
 }
 
 }  // namespace hlens::gui
