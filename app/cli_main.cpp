@@ -354,35 +354,13 @@ void print_stats(const Args& args, const std::vector<SurfaceStats>& stats, size_
         std::printf("   %zu sliver triangles (area %s) left out of the statistics\n", s.sliver_targets, g(s.sliver_area, 6).c_str());
 }
 
-// The error map of one direction as PLY: every vertex with its distance, every face with its
-// max, mean and RMS distance; "quality" (max on faces) is the scalar field MeshLab reads.
-void write_error_ply(const std::string& path, const TriangleMesh& M, const SurfaceStats& s) {
-    FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) throw UsageError("cannot write " + path + ": " + std::strerror(errno));
-    std::fprintf(f, "ply\nformat ascii 1.0\ncomment hlens-cli error map: distance from this mesh to the other\n");
-    std::fprintf(f, "element vertex %zu\nproperty double x\nproperty double y\nproperty double z\nproperty float quality\n"
-                 "property double distance\n", M.positions.size());
-    std::fprintf(f, "element face %zu\nproperty list uchar int vertex_indices\nproperty float quality\n"
-                 "property double max_distance\nproperty double mean_distance\nproperty double rms_distance\nend_header\n",
-                 M.num_triangles());
-    for (size_t v = 0; v < M.positions.size(); ++v) {
-        const double d = std::max(0.0, s.vertex_distance[v]);  // a vertex no triangle uses: 0
-        std::fprintf(f, "%.17g %.17g %.17g %.9g %.17g\n", M.positions[v].x, M.positions[v].y, M.positions[v].z, d, d);
-    }
-    for (size_t t = 0; t < M.num_triangles(); ++t) {
-        const TriangleStats& ts = s.triangles[t];
-        std::fprintf(f, "3 %u %u %u %.9g %.17g %.17g %.17g\n", M.triangles[t][0], M.triangles[t][1], M.triangles[t][2], ts.max,
-                     ts.max, ts.mean(), ts.rms());
-    }
-    if (std::fclose(f) != 0) throw UsageError("cannot write " + path);
-}
-
 void export_errors(const Args& args, const TriangleMesh& A, const TriangleMesh& B, const std::vector<SurfaceStats>& stats) {
     if (args.export_errors.empty()) return;
-    if (args.one_sided) { write_error_ply(args.export_errors, A, stats[0]); return; }
-    const std::string stem = args.export_errors.substr(0, args.export_errors.size() - 4);
-    write_error_ply(stem + "-ab.ply", A, stats[0]);
-    write_error_ply(stem + "-ba.ply", B, stats[1]);
+    try {
+        write_error_maps(args.export_errors, A, B, stats, args.one_sided);
+    } catch (const std::runtime_error& e) {
+        throw UsageError(e.what());   // (exit code 2, as a bad path always was)
+    }
 }
 
 // --tolerance without --stats: a verdict. A vertex farther than T (exact point-mesh distance)

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <stdexcept>
 
 #include "conic.h"
 #include "domain_mesh.h"
@@ -244,6 +247,41 @@ Value trace_final_json(const TargetSolver& ts, long steps) {
         .add("vertices", Value::integer(dm ? dm->num_live_vertices() : 0))
         .add("insertions", Value::integer(ts.insertions()))
         .add("degenerate", Value::boolean(dm == nullptr));
+}
+
+// The error map of one direction as PLY: every vertex with its distance, every face with its
+// max, mean and RMS distance; "quality" (max on faces) is the scalar field MeshLab reads.
+void write_error_ply(const std::string& path, const TriangleMesh& M, const SurfaceStats& s) {
+    FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+    std::fprintf(f, "ply\nformat ascii 1.0\ncomment hlens-cli error map: distance from this mesh to the other\n");
+    std::fprintf(f, "element vertex %zu\nproperty double x\nproperty double y\nproperty double z\nproperty float quality\n"
+                 "property double distance\n", M.positions.size());
+    std::fprintf(f, "element face %zu\nproperty list uchar int vertex_indices\nproperty float quality\n"
+                 "property double max_distance\nproperty double mean_distance\nproperty double rms_distance\nend_header\n",
+                 M.num_triangles());
+    for (size_t v = 0; v < M.positions.size(); ++v) {
+        const double d = std::max(0.0, s.vertex_distance[v]);  // a vertex no triangle uses: 0
+        std::fprintf(f, "%.17g %.17g %.17g %.9g %.17g\n", M.positions[v].x, M.positions[v].y, M.positions[v].z, d, d);
+    }
+    for (size_t t = 0; t < M.num_triangles(); ++t) {
+        const TriangleStats& ts = s.triangles[t];
+        std::fprintf(f, "3 %u %u %u %.9g %.17g %.17g %.17g\n", M.triangles[t][0], M.triangles[t][1], M.triangles[t][2], ts.max,
+                     ts.max, ts.mean(), ts.rms());
+    }
+    if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + path);
+}
+
+std::vector<std::string> write_error_maps(const std::string& path, const TriangleMesh& A, const TriangleMesh& B,
+                                          const std::vector<SurfaceStats>& stats, bool one_sided) {
+    if (one_sided) {
+        write_error_ply(path, A, stats.at(0));
+        return {path};
+    }
+    const std::string stem = path.size() > 4 ? path.substr(0, path.size() - 4) : path;
+    write_error_ply(stem + "-ab.ply", A, stats.at(0));
+    write_error_ply(stem + "-ba.ply", B, stats.at(1));
+    return {stem + "-ab.ply", stem + "-ba.ply"};
 }
 
 }  // namespace hlens

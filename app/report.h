@@ -76,6 +76,15 @@ std::string event_text(const Value& v);
 // number of events seen.
 Value trace_final_json(const TargetSolver& ts, long steps);
 Value label_json(const DomainLabel& l);
+
+// The error map of one direction as ASCII PLY: the measured mesh M, every vertex with its distance,
+// every face with its max, mean and RMS distance; "quality" (max on faces) is the scalar field
+// MeshLab reads. Throws std::runtime_error when the file cannot be written.
+void write_error_ply(const std::string& path, const TriangleMesh& M, const SurfaceStats& s);
+// hlens-cli --export-errors PATH.ply: PATH-ab.ply (A, stats[0]) and PATH-ba.ply (B, stats[1]), or
+// PATH.ply alone when one-sided. Returns the paths written.
+std::vector<std::string> write_error_maps(const std::string& path, const TriangleMesh& A, const TriangleMesh& B,
+                                          const std::vector<SurfaceStats>& stats, bool one_sided);
 Value curve_json(const Quadratic2& q);
 
 }  // namespace hlens

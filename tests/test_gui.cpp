@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "test_support.h"
+#include "test_meshes.h"
+#include "integrals.h"
+#include "target_maxima.h"
 #include "mesh_io.h"
 #include "target_solver.h"
 #include "voxel_grid.h"
@@ -1245,6 +1248,36 @@ std::vector<std::string> with(std::vector<std::string> a, const std::vector<std:
     return a;
 }
 
+
+// Every probe of the state (exact, on the demo's A) has the value expected(triangle) and is
+// coloured as the colour bar at (value - lo) / (hi - lo), not as the bar 0.4 away.
+void expect_probes_on_the_bar(const std::string& json, const Image& im, double lo, double hi,
+                              const std::function<double(long)>& expected) {
+    std::vector<int> bar = int_list(json, "bar");
+    ASSERT_EQ(bar.size(), 4u);
+    ASSERT_GT(bar[2], 100);
+    // The colour bar's colour at t in [0, 1] (its middle row).
+    auto bar_colour = [&](double t) {
+        return im.at(bar[0] + 1 + (int)std::lround(std::clamp(t, 0.0, 1.0) * (bar[2] - 3)), bar[1] + bar[3] / 2);
+    };
+    std::vector<Probe> ps = probes(json);
+    ASSERT_GE(ps.size(), 3u) << json;
+    for (const Probe& p : ps) {
+        ASSERT_GE(p.triangle, 0);
+        ASSERT_LT(p.triangle, 512);
+        EXPECT_TRUE(p.exact);
+        EXPECT_EQ(p.value, expected(p.triangle)) << "triangle " << p.triangle;
+        const double t = (p.value - lo) / (hi - lo);
+        const std::array<int, 3> want = bar_colour(t), other = bar_colour(t < 0.5 ? t + 0.4 : t - 0.4);
+        std::vector<std::array<int, 3>> px = square(im, p.x, p.y, std::min(p.clear, 4));
+        const long match = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, want, 12); });
+        const long wrong = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, other, 12); });
+        EXPECT_GT(match, (long)px.size() * 3 / 4)
+            << "triangle " << p.triangle << " (t = " << t << ") at " << p.x << "," << p.y << ": " << im.at(p.x, p.y)[0]
+            << " " << im.at(p.x, p.y)[1] << " " << im.at(p.x, p.y)[2] << " vs " << want[0] << " " << want[1] << " " << want[2];
+        EXPECT_LT(wrong, (long)px.size() / 4) << "triangle " << p.triangle << " looks like t = " << (t < 0.5 ? t + 0.4 : t - 0.4);
+    }
+}
 }  // namespace
 
 // Fill-in disabled: fast mode solved only the triangles that can reach h(A,B); every other one is
@@ -1349,30 +1382,7 @@ TEST(GuiExactMap, WaitColoursEveryTriangleByItsExactMaximum) {
 
     Image im = load_png(png);
     ASSERT_EQ(im.w, 800);
-    std::vector<int> bar = int_list(o.out, "bar");
-    ASSERT_EQ(bar.size(), 4u);
-    ASSERT_GT(bar[2], 100);
-    // The colour bar's colour at t in [0, 1] (its middle row).
-    auto bar_colour = [&](double t) {
-        return im.at(bar[0] + 1 + (int)std::lround(std::clamp(t, 0.0, 1.0) * (bar[2] - 3)), bar[1] + bar[3] / 2);
-    };
-    std::vector<Probe> ps = probes(o.out);
-    ASSERT_GE(ps.size(), 3u) << o.out;
-    for (const Probe& p : ps) {
-        ASSERT_GE(p.triangle, 0);
-        ASSERT_LT(p.triangle, 512);
-        EXPECT_TRUE(p.exact);
-        EXPECT_EQ(p.value, exact.max[p.triangle]) << "triangle " << p.triangle;
-        const double t = (p.value - lo) / (hi - lo);
-        const std::array<int, 3> want = bar_colour(t), other = bar_colour(t < 0.5 ? t + 0.4 : t - 0.4);
-        std::vector<std::array<int, 3>> px = square(im, p.x, p.y, std::min(p.clear, 4));
-        const long match = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, want, 12); });
-        const long wrong = std::count_if(px.begin(), px.end(), [&](auto c) { return shaded(c, other, 12); });
-        EXPECT_GT(match, (long)px.size() * 3 / 4)
-            << "triangle " << p.triangle << " (t = " << t << ") at " << p.x << "," << p.y << ": " << im.at(p.x, p.y)[0]
-            << " " << im.at(p.x, p.y)[1] << " " << im.at(p.x, p.y)[2] << " vs " << want[0] << " " << want[1] << " " << want[2];
-        EXPECT_LT(wrong, (long)px.size() / 4) << "triangle " << p.triangle << " looks like t = " << (t < 0.5 ? t + 0.4 : t - 0.4);
-    }
+    expect_probes_on_the_bar(o.out, im, lo, hi, [&](long t) { return exact.max[t]; });
     // No triangle is left grey (the hatch's greys do not appear on the mesh).
     std::vector<int> vp = int_list(o.out, "viewport");
     ASSERT_EQ(vp.size(), 4u);
@@ -1495,4 +1505,246 @@ TEST(Gui, UnitsLabelTheColourBar) {
     char want[64];
     std::snprintf(want, sizeof want, "\"%.4g mm\"", num(o.out, "hi", em));
     EXPECT_EQ(raw_value(o.out, "hi_label", em), want);
+}
+
+// ---- Exact surface statistics in the debugger (issue 9, item 3)
+
+namespace {
+constexpr std::array<int, 3> kPlotBars = {230, 179, 0};   // ImGui's PlotHistogram colour (dark style)
+
+// hlens-cli distance demo_a demo_b --stats --histogram 20 --json [extra...]: the GUI's options.
+Outcome cli_stats(const fs::path& dir, std::vector<std::string> extra = {}) {
+    std::vector<std::string> argv = {kCli, "distance", kDemoA, kDemoB, "--stats", "--histogram", "20", "--json"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    Outcome c = run(argv, dir);
+    EXPECT_TRUE(c.code == 0 || c.code == 4) << c.err;
+    return c;
+}
+}  // namespace
+
+// --stats: the sidebar's statistics of both directions are hlens-cli's, digit for digit (the state
+// line prints them as hlens-cli does), and the histograms are drawn; without it nothing is computed.
+TEST(GuiStats, StatisticsAreTheClisToTheDigit) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "stats.png";
+    Outcome o = run_gui({"--stats"}, png, dir, {}, "800x900");
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t st = o.out.find("\"stats\": {");
+    ASSERT_NE(st, std::string::npos) << o.out;
+    EXPECT_EQ(raw_value(o.out, "wanted", st), "true");
+    EXPECT_EQ(raw_value(o.out, "ready", st), "true");
+    Outcome c = cli_stats(dir);
+    for (const char* d : {"a_to_b", "b_to_a"}) {
+        const std::string gui = raw_value(o.out, d, st), cli = raw_value(c.out, d);
+        ASSERT_FALSE(gui.empty()) << o.out;
+        for (const char* key : {"area", "mean", "rms", "percentiles", "histogram"}) {
+            EXPECT_FALSE(raw_value(cli, key).empty()) << key;
+            EXPECT_EQ(raw_value(gui, key), raw_value(cli, key)) << d << " " << key;
+        }
+    }
+    Image im = load_png(png);
+    const int vx = int_list(o.out, "viewport")[0];
+    EXPECT_GT(count(im, 0, 0, vx, im.h, [](auto p) { return near(p, kPlotBars, 3); }), 400) << "the histograms";
+
+    fs::path png2 = dir / "default.png";
+    Outcome d = run_gui({}, png2, dir, {}, "800x900");
+    ASSERT_EQ(d.code, 0) << d.err;
+    const size_t st2 = d.out.find("\"stats\": {");
+    EXPECT_EQ(raw_value(d.out, "wanted", st2), "false");
+    EXPECT_EQ(raw_value(d.out, "ready", st2), "false");
+    Image im2 = load_png(png2);
+    EXPECT_EQ(count(im2, 0, 0, vx, im2.h, [](auto p) { return near(p, kPlotBars, 3); }), 0);
+}
+
+namespace {
+// The faces of an error map written by hlens-cli --export-errors (ASCII PLY): per face, its
+// max, mean and RMS distance; per vertex, its distance.
+struct ErrorMap {
+    std::vector<std::array<double, 3>> face;   // max, mean, rms
+    std::vector<double> vertex;
+    std::string header;
+};
+ErrorMap read_error_ply(const fs::path& p) {
+    ErrorMap m;
+    std::ifstream in(p);
+    size_t nv = 0, nf = 0;
+    for (std::string line; std::getline(in, line) && line != "end_header";) {
+        m.header += line + "\n";
+        std::istringstream ls(line);
+        std::string w, what;
+        ls >> w >> what;
+        if (w == "element" && what == "vertex") ls >> nv;
+        if (w == "element" && what == "face") ls >> nf;
+    }
+    for (size_t v = 0; v < nv; ++v) {
+        double x, y, z, q, d;
+        in >> x >> y >> z >> q >> d;
+        m.vertex.push_back(d);
+    }
+    for (size_t f = 0; f < nf; ++f) {
+        int n, a, b, c;
+        double q, mx, mean, rms;
+        in >> n >> a >> b >> c >> q >> mx >> mean >> rms;
+        m.face.push_back({mx, mean, rms});
+    }
+    return in ? m : ErrorMap{};
+}
+}  // namespace
+
+// --color-by mean: every triangle is coloured by its exact mean distance (the mean_distance of
+// hlens-cli --export-errors), on a range from the least to the largest mean; the picture differs
+// from --color-by max (the default).
+TEST(GuiStats, ColourByMeanFollowsEachTrianglesMean) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "mean.png", png_max = dir / "max.png";
+    Outcome o = run_gui(with({"--color-by", "mean"}, kZoomed), png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    Outcome m = run_gui(with({"--color-by", "max"}, kZoomed), png_max, dir);
+    ASSERT_EQ(m.code, 0) << m.err;
+    const size_t em = o.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos) << o.out;
+    EXPECT_EQ(raw_value(o.out, "color_by", em), "\"mean\"");
+    EXPECT_EQ(raw_value(o.out, "shows", em), "\"mean\"");
+    EXPECT_EQ(raw_value(m.out, "shows"), "\"max\"");
+
+    Outcome c = run({kCli, "distance", kDemoA, kDemoB, "--export-errors", (dir / "cli.ply").string()}, dir);
+    ASSERT_EQ(c.code, 0) << c.err;
+    const ErrorMap cli = read_error_ply(dir / "cli-ab.ply");
+    ASSERT_EQ(cli.face.size(), 512u);
+    double lo = HUGE_VAL, hi = 0;
+    for (const auto& f : cli.face) lo = std::min(lo, f[1]), hi = std::max(hi, f[1]);
+    EXPECT_NEAR(num(o.out, "lo", em), lo, 1e-7 * hi);
+    EXPECT_NEAR(num(o.out, "hi", em), hi, 1e-7 * hi);
+
+    Image im = load_png(png), im_max = load_png(png_max);
+    expect_probes_on_the_bar(o.out, im, lo, hi, [&](long t) { return cli.face[t][1]; });
+    // The pictures differ where the mesh is (the means are below the maxima, on another range).
+    std::vector<int> vp = int_list(o.out, "viewport");
+    ASSERT_EQ(vp.size(), 4u);
+    long differ = 0, total = 0;
+    for (int y = vp[3] / 5; y < vp[3] * 9 / 10; ++y)
+        for (int x = vp[0]; x < im.w; ++x, ++total)
+            differ += !near(im.at(x, y), im_max.at(x, y), 12);
+    EXPECT_GT(differ, total / 5) << "--color-by mean looks like --color-by max";
+}
+
+namespace {
+// The points of the state's "tolerance"."curve" (world coordinates).
+std::vector<hlens::Vec3> curve_points(const std::string& json) {
+    const size_t tol = json.find("\"tolerance\": {");
+    std::vector<double> v = num_list(json, "curve", tol == std::string::npos ? 0 : tol);
+    std::vector<hlens::Vec3> p;
+    for (size_t i = 0; i + 2 < v.size(); i += 3) p.push_back({v[i], v[i + 1], v[i + 2]});
+    return p;
+}
+const std::vector<std::string> kTolerance22 = {"--direction", "ba", "--target", "22", "--step", "end", "--tolerance", "0.14"};
+constexpr std::array<int, 3> kCurve = {255, 60, 50};      // the curve d = T in the domain view
+constexpr std::array<int, 3> kOutline = {255, 31, 26};    // triangles above T in the 3D view (1, 0.12, 0.1)
+}  // namespace
+
+// The tolerance in the domain view of target 22 of B (46 domains): every point the state gives on
+// the drawn curve d = T is at distance T from A (brute force over A's triangles), to 1e-9; the
+// target's area above T is the core's (area_above_levels on its finished domain mesh); the curve
+// and the shading are drawn, and the 3D view outlines the triangles whose maximum exceeds T.
+TEST(GuiStats, ToleranceCurveLiesWhereTheDistanceIsT) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "tolerance.png";
+    Outcome o = run_gui(kTolerance22, png, dir, {}, "1200x800");
+    ASSERT_EQ(o.code, 0) << o.err;
+    const double T = 0.14;
+    const size_t tol = o.out.find("\"tolerance\": {");
+    ASSERT_NE(tol, std::string::npos) << o.out;
+    EXPECT_EQ(num(o.out, "value", tol), T);
+    EXPECT_GE(num(o.out, "curve_arcs", tol), 4);
+    const hlens::TriangleMesh A = hlens::load_mesh(kDemoA), B = hlens::load_mesh(kDemoB);
+    const std::vector<hlens::Vec3> pts = curve_points(o.out);
+    ASSERT_GE(pts.size(), 12u) << o.out;
+    for (const hlens::Vec3& p : pts) EXPECT_NEAR(hlens_test::brute_distance(p, A), T, 1e-9 * T) << p.x << " " << p.y << " " << p.z;
+
+    hlens::VoxelGrid grid(A, B);
+    hlens::TargetSolver ts(grid, 1, 22);
+    ts.run();
+    const double sc = ts.frame().scale;
+    const double core = hlens::area_above_levels(*ts.domain_mesh(), {T * T / (sc * sc)})[0] * sc * sc;
+    const double gui = num(raw_value(o.out, "target", tol), "area_above"), view = num(raw_value(o.out, "view", tol), "area_above");
+    EXPECT_NEAR(gui, core, 1e-12 * sc * sc);
+    EXPECT_NEAR(view, core, 1e-12 * sc * sc);
+    EXPECT_GT(core, 0.1 * num(raw_value(o.out, "target", tol), "area"));
+    EXPECT_LT(core, 0.9 * num(raw_value(o.out, "target", tol), "area"));
+
+    Image im = load_png(png);
+    std::vector<int> dv = int_list(o.out, "domain_view"), vp = int_list(o.out, "viewport");
+    ASSERT_EQ(dv.size(), 4u);
+    EXPECT_GT(count(im, dv[0], dv[1], dv[0] + dv[2], dv[1] + dv[3], [](auto p) { return near(p, kCurve, 4); }), 60) << "the curve";
+    EXPECT_GT(count(im, vp[0], vp[1], vp[0] + vp[2], vp[1] + vp[3], [](auto p) { return shaded(p, kOutline, 10); }), 60)
+        << "the outlines of the triangles above T";
+}
+
+// The measured mesh's area above T: with --stats it is hlens-cli's --stats --tolerance T, to the
+// digit; the triangles outlined are those whose exact maximum exceeds T; without a tolerance none.
+TEST(GuiStats, MeshAreaAboveTIsTheClis) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "mesh.png";
+    Outcome o = run_gui({"--direction", "ba", "--tolerance", "0.14", "--stats"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t tol = o.out.find("\"tolerance\": {");
+    ASSERT_NE(tol, std::string::npos) << o.out;
+    const std::string mesh = raw_value(o.out, "mesh", tol);
+    Outcome c = cli_stats(dir, {"--tolerance", "0.14"});
+    EXPECT_EQ(raw_value(mesh, "area_above"), raw_value(raw_value(c.out, "b_to_a"), "area_above")) << mesh;
+    EXPECT_EQ(raw_value(mesh, "fraction_above"), raw_value(raw_value(c.out, "b_to_a"), "fraction_above"));
+    const hlens::TriangleMesh A = hlens::load_mesh(kDemoA), B = hlens::load_mesh(kDemoB);
+    hlens::VoxelGrid grid(A, B);
+    const hlens::TargetMaxima mx = hlens::exact_target_maxima(grid, 1);
+    EXPECT_EQ((long)num(mesh, "triangles_above"), std::count_if(mx.max.begin(), mx.max.end(), [](double v) { return v > 0.14; }));
+    EXPECT_GT(num(mesh, "triangles_above"), 0);
+
+    Outcome d = run_gui({"--direction", "ba"}, dir / "plain.png", dir);
+    ASSERT_EQ(d.code, 0) << d.err;
+    EXPECT_EQ(raw_value(d.out, "tolerance"), "null");
+    Image with = load_png(png), without = load_png(dir / "plain.png");
+    std::vector<int> vp = int_list(o.out, "viewport");
+    auto outlined = [&](const Image& im) {
+        return count(im, vp[0], vp[1], vp[0] + vp[2], vp[1] + vp[3], [](auto p) { return shaded(p, kOutline, 10); });
+    };
+    EXPECT_GT(outlined(with), 60);
+    EXPECT_EQ(outlined(without), 0);
+}
+
+// --export-errors PATH.ply: the debugger writes the error maps of both directions, byte for byte
+// hlens-cli --export-errors's, and they read back as PLY with every face's max, mean and RMS
+// (the statistics the sidebar shows) and every vertex's distance.
+TEST(GuiStats, ExportWritesTheClisErrorMaps) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "export.png";
+    const std::string path = (dir / "gui.ply").string();
+    Outcome o = run_gui({"--export-errors", path}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const std::string maps = raw_value(o.out, "error_maps");
+    EXPECT_EQ(raw_value(maps, "ok"), "true") << o.out;
+    Outcome c = run({kCli, "distance", kDemoA, kDemoB, "--export-errors", (dir / "cli.ply").string()}, dir);
+    ASSERT_EQ(c.code, 0) << c.err;
+    for (const char* side : {"ab", "ba"}) {
+        const fs::path gui = dir / ("gui-" + std::string(side) + ".ply"), cli = dir / ("cli-" + std::string(side) + ".ply");
+        ASSERT_TRUE(fs::exists(gui)) << gui;
+        EXPECT_EQ(read_file(gui), read_file(cli)) << side;
+        const ErrorMap m = read_error_ply(gui);
+        ASSERT_EQ(m.face.size(), std::string(side) == "ab" ? 512u : 32u);
+        EXPECT_NE(m.header.find("property float quality"), std::string::npos);
+        EXPECT_EQ(m.vertex.size(), std::string(side) == "ab" ? 289u : 25u);
+        for (const auto& f : m.face) {
+            EXPECT_GE(f[0], f[2]);   // max >= RMS >= mean >= 0
+            EXPECT_GE(f[2], f[1]);
+            EXPECT_GE(f[1], 0);
+        }
+    }
+    // The file's maxima are the exact maxima of the colour map.
+    const hlens::TriangleMesh A = hlens::load_mesh(kDemoA), B = hlens::load_mesh(kDemoB);
+    hlens::VoxelGrid grid(A, B);
+    const hlens::TargetMaxima mx = hlens::exact_target_maxima(grid, 0);
+    const ErrorMap ab = read_error_ply(dir / "gui-ab.ply");
+    for (size_t t = 0; t < ab.face.size(); ++t) EXPECT_NEAR(ab.face[t][0], mx.max[t], 1e-12) << t;
+    // A bad path is a usage error.
+    Outcome bad = run({kGui, "--export-errors", "x.obj"}, dir);
+    EXPECT_EQ(bad.code, 2);
 }

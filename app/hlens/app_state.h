@@ -2,6 +2,7 @@
 // `Requests` for the loop to act on (start/cancel jobs, reset the camera, save a PNG), so panels
 // need no access to OpenGL or to the job threads.
 #pragma once
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include "compute.h"
 #include "scene.h"
 #include "stepper.h"
+#include "tolerance_cut.h"
 
 namespace hlens::gui {
 
@@ -41,9 +43,29 @@ struct ExactMap {
 
 enum class ExactMode { Off, On, Wait };   // --exact-colormap off|on|wait
 
+// The exact surface statistics of both directions (issue 9): computed only when asked for
+// ("Compute statistics", --stats, colouring by mean or RMS, exporting the error map), in the
+// background (StatsJob: every target's full construction), with progress and Cancel.
+struct StatsView {
+    bool wanted = false;          // asked for: computed once the distances are known
+    std::array<std::shared_ptr<const SurfaceStats>, 2> dir;   // null until computed
+    double tolerance = -1;        // the tolerance they were computed with (< 0: none)
+    bool running = false, cancelled = false;
+    double progress = -1, elapsed = 0;
+    std::string phase, failed;
+    bool ready() const { return dir[0] && dir[1]; }
+};
+
+// What the colour map shows per triangle of the measured mesh (--color-by).
+enum class ColourBy { Max = 0, Mean = 1, Rms = 2 };
+const char* colour_by_name(ColourBy c);   // "max", "mean", "rms"
+
 struct Requests {
     bool cancel = false, recompute = false, home = false, screenshot = false, clear_errors = false;
     bool exact_cancel = false, exact_resume = false;   // stop / continue the exact colour map's fill-in
+    bool stats_start = false, stats_cancel = false;   // compute (again, at the current tolerance) / stop the statistics
+    bool colours = false;         // the colour map's quantity changed: upload and re-range it
+    bool export_errors = false;   // write the error map (PLY) of both directions
     bool focus = false;           // frame the selected target and the sphere of its largest distance
     int set_direction = -1;
     long select = -2;             // -2: nothing; -1: clear the selection; >= 0: select that target
@@ -91,6 +113,20 @@ struct AppState {
     ViewRect target_window;       // the target panel over the 3D view (window coordinates)
     bool show_witness[2] = {true, true};
     bool show_colormap = true;
+    ColourBy colour_by = ColourBy::Max;
+    double tolerance = -1;        // the tolerance T (world units; < 0: none)
+    double tolerance_input = 0;   // the tolerance field (applied while its checkbox is on)
+    // The selected target cut at T (its finished domain mesh, from its trace) and the domain
+    // view's mesh at the current step cut at T, each with what it was computed for.
+    ToleranceCut target_cut, view_cut;
+    const void* target_cut_of = nullptr;
+    unsigned long view_cut_revision = 0;
+    StatsView stats;
+    std::string errors_path = "hlens-errors.ply";   // "Export error map": PATH-ab.ply, PATH-ba.ply
+    std::string errors_status;    // the paths written, or the error
+    bool errors_ok = false;
+    bool errors_pending = false;  // export once the statistics are known (--export-errors)
+    std::vector<std::string> errors_written;
     int up_axis = 2;
 
     std::string demo_path[2];     // the built-in demo pair

@@ -1,7 +1,9 @@
 #include "args.h"
 
 #include <climits>
+#include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 
 #include "gl.h"
 
@@ -10,7 +12,9 @@ namespace hlens::gui {
 const char* usage_text() {
     return "usage: hlens [A B] [--target I] [--direction ab|ba] [--size WxH] [--screenshot PATH]\n"
            "             [--step N|end] [--event-log] [--graph] [--overlay] [--case NAME [--epsilon E]] [--export-case DIR]\n"
-           "             [--exact-colormap on|off|wait] [--units NAME]\n"
+           "             [--exact-colormap on|off|wait] [--units NAME] [--stats]\n"
+           "             [--color-by max|mean|rms] [--tolerance T]\n"
+           "             [--export-errors PATH.ply]\n"
            "\n"
            "The interactive debugger of Hausdorff Lens. With no meshes it opens the built-in demo pair\n"
            "(assets/demo_a.obj, assets/demo_b.obj).\n"
@@ -37,6 +41,17 @@ const char* usage_text() {
            "                      yet exact\". off: never fill in; wait: with --screenshot, the picture\n"
            "                      waits until every triangle is exact (the default of --screenshot;\n"
            "                      with on it is taken as soon as the distances are known)\n"
+           "  --stats             compute the exact surface statistics of both directions at start-up\n"
+           "                      (as the sidebar's \"Compute statistics\"; --screenshot waits for them)\n"
+           "  --color-by max|mean|rms\n"
+           "                      the colour map's value per triangle: the exact maximum (default), or\n"
+           "                      the exact mean or RMS distance over it (these compute the statistics)\n"
+           "  --tolerance T       the tolerance field: triangles whose maximum exceeds T outlined red, the\n"
+           "                      area above T for the mesh (with the statistics) and the target; in the\n"
+           "                      domain view the curve d = T and the part above it shaded\n"
+           "  --export-errors PATH.ply\n"
+           "                      once the statistics are known, write the error maps as hlens-cli\n"
+           "                      --export-errors does: PATH-ab.ply (A) and PATH-ba.ply (B)\n"
            "\n"
            "  --click X,Y, --double-click X,Y, --drag X0,Y0,X1,Y1, --right-drag X0,Y0,X1,Y1,\n"
            "  --wheel X,Y,STEPS, --hover X,Y, --wait FRAMES, --key home|f1|f12|left|right|space\n"
@@ -76,6 +91,16 @@ std::vector<float> parse_floats(const std::string& s, size_t n, const std::strin
     }
     if (v.size() != n) throw UsageError(what + ": expected " + std::to_string(n) + " numbers, got '" + s + "'");
     return v;
+}
+
+// The index of v among `choices`; else a UsageError "<what>, got 'v'".
+int parse_choice(const std::string& v, std::initializer_list<const char*> choices, const std::string& what) {
+    int i = 0;
+    for (const char* c : choices) {
+        if (v == c) return i;
+        ++i;
+    }
+    throw UsageError(what + ", got '" + v + "'");
 }
 
 }  // namespace
@@ -157,11 +182,22 @@ Options parse_args(const std::vector<std::string>& args) {
         } else if (a == "--wait") {
             o.input.push_back({InputAction::Wait, 0, 0, (float)parse_long(value(), a), 0});
         } else if (a == "--exact-colormap") {
+            o.exact_colormap = parse_choice(value(), {"off", "on", "wait"}, "--exact-colormap expects on, off or wait");
+        } else if (a == "--color-by") {
+            o.color_by = parse_choice(value(), {"max", "mean", "rms"}, "--color-by expects max, mean or rms");
+        } else if (a == "--tolerance") {
             const std::string& v = value();
-            if (v == "off") o.exact_colormap = 0;
-            else if (v == "on") o.exact_colormap = 1;
-            else if (v == "wait") o.exact_colormap = 2;
-            else throw UsageError("--exact-colormap expects on, off or wait, got '" + v + "'");
+            char* end = nullptr;
+            o.tolerance = std::strtod(v.c_str(), &end);
+            if (v.empty() || !end || *end || !(o.tolerance >= 0) || !std::isfinite(o.tolerance))
+                throw UsageError("--tolerance expects a distance >= 0, got '" + v + "'");
+        } else if (a == "--export-errors") {
+            o.export_errors = value();
+            const std::string& e = o.export_errors;
+            if (e.size() < 5 || e.compare(e.size() - 4, 4, ".ply") != 0)
+                throw UsageError("--export-errors needs a path ending in .ply, got '" + e + "'");
+        } else if (a == "--stats") {
+            o.stats = true;
         } else if (a == "--units") {
             o.units = value();
         } else if (a == "--layout-file") {

@@ -46,6 +46,10 @@ struct Options {
     // triangles stay "not yet exact"), 2 wait (on; --screenshot waits until it is complete).
     // -1: not given (on; wait with --screenshot).
     int exact_colormap = -1;
+    int color_by = 0;            // --color-by max|mean|rms: 0, 1, 2 (mean and RMS imply --stats)
+    double tolerance = -1;       // --tolerance T: the tolerance field, set and on (< 0: not given)
+    std::string export_errors;   // --export-errors PATH.ply: write the error maps (with --screenshot)
+    bool stats = false;          // --stats: compute the exact surface statistics at start-up
     bool help = false;
 };
 

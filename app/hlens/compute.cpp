@@ -119,13 +119,7 @@ std::shared_ptr<const LoadedScene> ComputeJob::take_scene() {
     return std::move(scene_);
 }
 
-std::optional<ComputeOutput> ComputeJob::take_result() {
-    if (running()) return std::nullopt;
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::optional<ComputeOutput> r = std::move(result_);
-    result_.reset();
-    return r;
-}
+std::optional<ComputeOutput> ComputeJob::take_result() { return take_when_ended(result_); }
 
 // ---------------------------------------------------------------- ExactMapJob
 
@@ -176,6 +170,46 @@ bool ExactMapJob::take_ended() {
     return true;
 }
 
+// ---------------------------------------------------------------- StatsJob
+
+void StatsJob::start(std::shared_ptr<const LoadedScene> scene, const double distance[2], double tolerance) {
+    stop();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        result_.reset();
+    }
+    scene_ = scene;
+    const double known[2] = {distance[0], distance[1]};
+    launch([this, scene, known, tolerance] {
+        StatsOutput out;
+        out.tolerance = tolerance;
+        try {
+            std::array<std::shared_ptr<const SurfaceStats>, 2> dir;
+            for (int side = 0; side < 2 && !cancel_flag().load(); ++side) {
+                set_phase(side == 0 ? "statistics of h(A,B)" : "statistics of h(B,A)");
+                StatsOptions opt;
+                opt.histogram_bins = kStatsBins;
+                opt.tolerance = tolerance;
+                opt.known_max = known[side];
+                opt.cancel = &cancel_flag();
+                opt.progress = [this, side](double f) { set_progress(0.5 * side + 0.5 * f); };
+                auto st = std::make_shared<SurfaceStats>(surface_stats(*scene->grid, side, opt));
+                if (st->cancelled) break;
+                dir[side] = std::move(st);
+            }
+            if (dir[0] && dir[1] && !cancel_flag().load()) out.dir = dir;
+            set_phase(out.dir[0] ? "Done" : "Cancelled");
+        } catch (const std::exception& e) {   // never let an exception escape the thread
+            out.error = e.what();
+            set_phase(std::string("failed: ") + e.what());
+        }
+        std::lock_guard<std::mutex> lock(mutex_);
+        result_ = std::move(out);
+    });
+}
+
+std::optional<StatsOutput> StatsJob::take_result() { return take_when_ended(result_); }
+
 // ---------------------------------------------------------------- TraceJob
 
 void TraceJob::start(std::shared_ptr<const LoadedScene> scene, int side, uint32_t target) {
@@ -212,12 +246,6 @@ void TraceJob::start(std::shared_ptr<const LoadedScene> scene, int side, uint32_
     });
 }
 
-std::optional<TraceSummary> TraceJob::take_result() {
-    if (running()) return std::nullopt;
-    std::lock_guard<std::mutex> lock(mutex_);
-    std::optional<TraceSummary> r = std::move(result_);
-    result_.reset();
-    return r;
-}
+std::optional<TraceSummary> TraceJob::take_result() { return take_when_ended(result_); }
 
 }  // namespace hlens::gui

@@ -18,6 +18,7 @@
 
 #include "hausdorff.h"
 #include "mesh.h"
+#include "surface_stats.h"
 #include "target_maxima.h"
 #include "target_solver.h"
 #include "voxel_grid.h"
@@ -70,6 +71,14 @@ protected:
     void set_phase(std::string s);
     void set_progress(double f) { progress_.store(f); }
     const std::atomic<bool>& cancel_flag() const { return cancel_; }
+    // A result slot's value, once, after the run has ended (empty while it runs).
+    template <class T> std::optional<T> take_when_ended(std::optional<T>& slot) {
+        if (running()) return std::nullopt;
+        std::lock_guard<std::mutex> lock(mutex_);
+        std::optional<T> r = std::move(slot);
+        slot.reset();
+        return r;
+    }
     mutable std::mutex mutex_;                 // guards the derived class's results and phase_
 
 private:
@@ -125,6 +134,30 @@ private:
     size_t total_ = 0;
     int side_ = 0;
     bool ended_ = false;
+};
+
+// The exact surface statistics of both directions (core/surface_stats.h: every target's full
+// construction, integrated), on request: h(A,B) then h(B,A), with the same options as
+// `hlens-cli distance A B --stats --histogram kStatsBins [--tolerance T]`, so the numbers agree.
+constexpr int kStatsBins = 20;
+struct StatsOutput {
+    std::array<std::shared_ptr<const SurfaceStats>, 2> dir;   // both set, or none (cancelled / failed)
+    double tolerance = -1;        // the tolerance they were computed with (< 0: none)
+    std::string error;
+};
+
+class StatsJob : public Worker {
+public:
+    ~StatsJob() override { stop(); }
+    // `distance[d]`: the one-sided distances (StatsOptions::known_max). Replaces a previous run.
+    void start(std::shared_ptr<const LoadedScene> scene, const double distance[2], double tolerance);
+    const LoadedScene* scene() const { return scene_.get(); }
+    // The outcome, once, when the run has ended.
+    std::optional<StatsOutput> take_result();
+
+private:
+    std::shared_ptr<const LoadedScene> scene_;
+    std::optional<StatsOutput> result_;
 };
 
 // One target T' of mesh `side` against the other mesh: what the target panel shows.

@@ -43,10 +43,12 @@
 #include "compute.h"
 #include "gl.h"
 #include "json_value.h"
+#include "report.h"
 #include "panels.h"
 #include "picking.h"
 #include "scene.h"
 #include "screenshot.h"
+#include "stats_flow.h"
 #include "target_maxima.h"
 
 #ifndef HLENS_ASSET_DIR
@@ -136,12 +138,12 @@ std::string json_number(double v) {
 
 // ---- The exact colour map (per direction): fast mode's exact values, then the fill-in's.
 
-// The colour map's range: the exact values known so far (never a bound). It follows them while
-// the user has not moved it (or always, with `reset`).
-void refresh_range(AppState& s, int d, bool reset) {
+// The colour map's range: the values shown (exact maxima known so far, never a bound; or the
+// means or RMS). It follows them while the user has not moved it (or always, with `reset`).
+void refresh_range(AppState& s, int d, const std::vector<double>& values, bool reset) {
     ColourRange& r = s.range[d];
     double lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (double v : s.exact[d].value)
+    for (double v : values)
         if (v >= 0) lo = std::min(lo, v), hi = std::max(hi, v);
     const bool follow = reset || !r.valid || (r.lo == r.data_lo && r.hi == r.data_hi);
     r.valid = lo <= hi;
@@ -152,6 +154,14 @@ void refresh_range(AppState& s, int d, bool reset) {
         r.lo = r.data_lo;
         r.hi = r.data_hi;
     }
+}
+
+// Direction d's colour map on the GPU and its range, after its values changed.
+void show_values(AppState& s, Scene& scene, int d, bool reset) {
+    const std::vector<double> v = colour_values(s, d);
+    scene.set_values(d, v);
+    scene.set_maxima(d, s.exact[d].value);
+    refresh_range(s, d, v, reset);
 }
 
 // Direction d's map as fast mode left it: exact where it solved the triangle, unknown elsewhere.
@@ -189,6 +199,7 @@ double target_value(const AppState& s, int d, long t, bool& exact) {
 // radius `clear` >= 2 such that the square of that radius around it shows only that triangle: no
 // edge of it (lines are kept 2 pixels away), no other mesh in front, no panel, witness marker or
 // hint text over it. The triangles with the largest such squares first (radius up to `max_clear`).
+// "value" is the value the colour map shows there (max, mean or RMS; null: not yet exact).
 std::string probes_json(const AppState& s, const std::vector<int>& ids, const int vp[4], int fb_h, const glm::mat4& mvp,
                         const Scene& scene, float fbs, int max_clear, int per_kind) {
     const int d = s.direction, w = vp[2], h = vp[3];
@@ -255,6 +266,7 @@ std::string probes_json(const AppState& s, const std::vector<int>& ids, const in
     for (const auto& [t, b] : best) order.emplace_back(-b.k, t);
     std::sort(order.begin(), order.end());
     const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
+    const std::vector<double> shown = colour_values(s, d);   // the colour map's value (max, mean or RMS)
     std::string j = "[";
     int taken[2] = {0, 0};
     for (const auto& [negk, t] : order) {
@@ -264,11 +276,49 @@ std::string probes_json(const AppState& s, const std::vector<int>& ids, const in
         const Best& b = best[t];
         if (j.size() > 1) j += ", ";
         j += "{\"triangle\": " + std::to_string(t) + ", \"exact\": " + (exact ? "true" : "false") +
-             ", \"value\": " + (exact ? json_number(s.exact[d].value[t]) : "null") +
+             ", \"value\": " + ((size_t)t < shown.size() && shown[t] >= 0 ? json_number(shown[t]) : "null") +
              ", \"bound\": " + ((size_t)t < r.target_max.size() ? json_number(r.target_max[t]) : "null") +
              ", \"pixel\": [" + std::to_string(b.x) + ", " + std::to_string(b.y) + "], \"clear\": " + std::to_string(b.k - 2) + "}";
     }
     return j + "]";
+}
+
+// The statistics as hlens-cli distance --stats --json reports them per direction (report.h).
+std::string stats_json(const AppState& s) {
+    const StatsView& v = s.stats;
+    Value o = Value::object().add("wanted", Value::boolean(v.wanted)).add("ready", Value::boolean(v.ready()));
+    o.add("tolerance", v.ready() && v.tolerance >= 0 ? Value::number(v.tolerance) : Value());
+    for (int d = 0; d < 2 && v.ready(); ++d) {
+        Value dir = Value::object();
+        add_stats_json(dir, *v.dir[d], v.tolerance);
+        o.add(d == 0 ? "a_to_b" : "b_to_a", std::move(dir));
+    }
+    return to_json(o);
+}
+
+// The tolerance: the measured mesh's area above it (exact with the statistics at T, "bound": the
+// triangles whose maximum exceeds it), the selected target's (its domain mesh cut at T), and
+// points on the curve d = T as the domain view draws it (else of the target's final mesh), world
+// coordinates.
+std::string tolerance_json(const AppState& s) {
+    if (s.tolerance < 0) return "null";
+    const MeshAbove m = mesh_above(s, s.direction);
+    Value o = Value::object().add("value", Value::number(s.tolerance));
+    o.add("mesh", Value::object()
+                      .add("area", Value::number(m.area))
+                      .add("area_above", m.exact >= 0 ? Value::number(m.exact) : Value())
+                      .add("fraction_above", m.exact >= 0 ? Value::number(m.fraction) : Value())
+                      .add("triangles_above", Value::integer((long long)m.triangles))
+                      .add("bound", Value::number(m.bound)));
+    const ToleranceCut& t = s.target_cut;
+    o.add("target", t.t >= 0 ? Value::object().add("area", Value::number(t.area)).add("area_above", Value::number(t.area_above)) : Value());
+    const bool view = s.stepper.open && s.stepper.active() && s.view_cut.t >= 0;
+    const ToleranceCut& c = view ? s.view_cut : t;
+    if (view) o.add("view", Value::object().add("area", Value::number(c.area)).add("area_above", Value::number(c.area_above)));
+    Value pts = Value::array();
+    for (const Vec3& p : c.samples) pts.push(Value::array().push(Value::number(p.x)).push(Value::number(p.y)).push(Value::number(p.z)));
+    o.add("curve_arcs", Value::integer((long long)c.curve.size())).add("curve", std::move(pts));
+    return to_json(o);
 }
 
 // The state behind a headless picture, one JSON line.
@@ -302,7 +352,8 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
         const ColourRange& r = s.range[d];
         const char* mode = s.exact_mode == ExactMode::Off ? "off" : s.exact_mode == ExactMode::On ? "on" : "wait";
         const float fx = ImGui::GetIO().DisplayFramebufferScale.x;
-        j += ", \"exact_colormap\": {\"mode\": \"" + std::string(mode) + "\", \"exact\": " + std::to_string(m.exact) +
+        j += ", \"exact_colormap\": {\"mode\": \"" + std::string(mode) + "\", \"color_by\": \"" +
+             colour_by_name(s.colour_by) + "\", \"shows\": \"" + (s.stats.ready() ? colour_by_name(s.colour_by) : "max") + "\", \"exact\": " + std::to_string(m.exact) +
              ", \"triangles\": " + std::to_string(m.value.size()) + ", \"complete\": " + (m.complete() ? "true" : "false") +
              ", \"running\": " + (s.exact_running && s.exact_side == d ? "true" : "false") +
              ", \"stopped\": " + (m.stopped ? "true" : "false") + ", \"complete_at\": " + (m.complete_at >= 0 ? json_number(m.complete_at) : "null") +
@@ -315,6 +366,13 @@ std::string state_json(const AppState& s, const Camera& cam, const Vec3& origin,
              ", \"hi_label\": " + to_json(Value::string(s.colour_bar_hi_label));
         if (!probes.empty()) j += ", \"probes\": " + probes;
         j += "}";
+    }
+    j += ", \"stats\": " + stats_json(s);
+    j += ", \"tolerance\": " + tolerance_json(s);
+    if (!s.errors_status.empty()) {
+        Value w = Value::array();
+        for (const std::string& p : s.errors_written) w.push(Value::string(p));
+        j += ", \"error_maps\": " + to_json(Value::object().add("ok", Value::boolean(s.errors_ok)).add("written", std::move(w)));
     }
     j += ", \"camera\": {\"yaw\": " + json_number(cam.yaw) + ", \"pitch\": " + json_number(cam.pitch) +
          ", \"distance\": " + json_number(cam.distance) + ", \"pivot\": [" + json_number(cam.pivot.x) + ", " +
@@ -529,6 +587,11 @@ int main(int argc, char** argv) {
     s.headless = !opt.screenshot.empty();
     s.demo = opt.demo;
     s.units = opt.units;
+    s.colour_by = (ColourBy)opt.color_by;
+    s.tolerance = opt.tolerance;
+    s.tolerance_input = std::max(0.0, opt.tolerance);
+    s.stats.wanted = opt.stats || s.colour_by != ColourBy::Max || !opt.export_errors.empty();
+    if (!opt.export_errors.empty()) s.errors_path = opt.export_errors, s.errors_pending = true;
     s.scripted_input = !opt.input.empty();
     for (int side = 0; side < 2; ++side) {
         s.demo_path[side] = std::string(HLENS_ASSET_DIR) + (side == 0 ? "/demo_a.obj" : "/demo_b.obj");
@@ -613,13 +676,18 @@ int main(int argc, char** argv) {
     ComputeJob compute;
     TraceJob trace;
     ExactMapJob exact_job;   // the exact colour map's fill-in (one direction at a time)
+    StatsJob stats_job;      // the exact surface statistics, on request
     // Times in the state are from start-up for the first pair, from the request for later ones.
     auto compute_started = program_start;
     bool first_compute = true;
     auto since_start = [&]() { return std::chrono::duration<double>(std::chrono::steady_clock::now() - compute_started).count(); };
     auto start_compute = [&]() {
         exact_job.cancel();   // its values are for the old meshes (dropped when harvested)
+        stats_job.cancel();   // (the same)
         s.exact[0] = s.exact[1] = ExactMap{};
+        s.stats.dir = {};
+        s.stats.cancelled = false;
+        s.stats.failed.clear();
         s.distances_at = -1;
         if (!first_compute) compute_started = std::chrono::steady_clock::now();
         first_compute = false;
@@ -642,7 +710,7 @@ int main(int argc, char** argv) {
         // ---- 1. Events (interactive and idle: sleep until something happens)
         // (while only the exact colour map fills in, 10 frames a second show its progress and
         // leave the cores to it; input still wakes the loop at once)
-        const bool busy = compute.running() || trace.running(), filling = exact_job.running();
+        const bool busy = compute.running() || trace.running(), filling = exact_job.running() || stats_job.running();
         if (s.headless || busy || redraw > 0)
             glfwPollEvents();
         else
@@ -690,8 +758,7 @@ int main(int argc, char** argv) {
                 s.distances_at = since_start();
                 for (int d = 0; d < 2; ++d) {
                     init_exact(s, d);
-                    scene.set_values(d, s.exact[d].value);
-                    refresh_range(s, d, true);
+                    show_values(s, scene, d, true);
                 }
             }
         }
@@ -709,8 +776,7 @@ int main(int argc, char** argv) {
                 std::fprintf(stderr, "hlens: exact colour map: %s\n", s.exact[side].failed.c_str());
             }
             if (changed) {
-                scene.set_values(side, s.exact[side].value);
-                refresh_range(s, side, false);
+                show_values(s, scene, side, false);
             }
             for (ExactMap& e : s.exact)
                 if (s.computed && e.complete() && e.complete_at < 0) e.complete_at = since_start();
@@ -736,8 +802,7 @@ int main(int argc, char** argv) {
             if (!tr->cancelled && s.selected[tr->side] == (long)tr->target) {
                 // A finished trace is the target's full construction: its maximum is exact.
                 if (s.computed && tr->error.empty() && set_exact(s, tr->side, tr->target, tr->max)) {
-                    scene.set_values(tr->side, s.exact[tr->side].value);
-                    refresh_range(s, tr->side, false);
+                    show_values(s, scene, tr->side, false);
                 }
                 s.trace[tr->side] = std::move(*tr);
             }
@@ -836,6 +901,8 @@ int main(int argc, char** argv) {
             p.hi = s.range[s.direction].hi;
             p.selected = (int)s.selected[s.direction];
             p.hatch = std::round(hatch_period(ImGui::GetFontSize()) * fbs_x);
+            p.tolerance = s.computed ? (float)s.tolerance : -1.0f;
+            p.outline = std::max(1.5f, 0.12f * ImGui::GetFontSize() * fbs_x);
             return p;
         };
 
@@ -919,6 +986,15 @@ int main(int argc, char** argv) {
             req.recompute = true;
         }
         if (req.export_case) export_selected(s);
+        if (update_stats(s, req, stats_job) || req.colours)
+            for (int d = 0; d < 2 && s.computed; ++d) show_values(s, scene, d, true);
+        if ((req.export_errors || (s.errors_pending && s.stats.ready())) && s.computed && !export_error_maps(s)) {
+            std::fprintf(stderr, "hlens: %s\n", s.errors_status.c_str());
+            if (s.headless && !opt.export_errors.empty()) {
+                exit_code = 2;
+                break;
+            }
+        }
         if (req.recompute) {
             s.computed = s.cancelled = false;
             s.range[0].valid = s.range[1].valid = false;   // (start_compute clears the exact maps)
@@ -972,8 +1048,11 @@ int main(int argc, char** argv) {
             const ExactMap& em = s.exact[d];
             const bool filled = s.exact_mode != ExactMode::Wait || !s.computed ||
                                 ((em.complete() || em.stopped || !em.failed.empty()) && !exact_job.running());
+            // Statistics asked for: they have arrived (or were cancelled, or failed).
+            const StatsView& sv = s.stats;
+            const bool stats_done = !sv.wanted || !s.computed || ((sv.ready() || sv.cancelled || !sv.failed.empty()) && !stats_job.running());
             const bool ready = compute_done && !compute.running() &&
-                               (errored || (target_applied && script_pos >= script.size() && traced && !trace.running() && filled));
+                               (errored || (target_applied && script_pos >= script.size() && traced && !trace.running() && filled && stats_done));
             if (!ready) settle = 0;
             if (ready && ++settle > 4) {   // a few frames for ImGui windows to size themselves
                 if (!opt.export_dir.empty() && !errored && !export_selected(s)) {
@@ -1007,6 +1086,7 @@ int main(int argc, char** argv) {
     compute.cancel();
     trace.cancel();
     exact_job.cancel();
+    stats_job.cancel();
     picker_ptr.reset();
     scene_ptr.reset();
     ImGui_ImplOpenGL3_Shutdown();

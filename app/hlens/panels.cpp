@@ -12,6 +12,8 @@
 
 #include "cases.h"
 #include "colormap.h"
+#include "stats_panel.h"
+#include "tolerance_panel.h"
 
 namespace hlens::gui {
 
@@ -229,10 +231,32 @@ void exact_section(AppState& s) {
     }
 }
 
+// What the colour map shows per triangle: the exact maximum, or the mean or RMS distance over
+// the triangle (from the statistics, computed when first asked for).
+void colour_by_combo(AppState& s) {
+    static const char* items[3] = {"max distance", "mean distance", "RMS distance"};
+    int c = (int)s.colour_by;
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("per triangle");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::Combo("##colour_by", &c, items, 3) && c != (int)s.colour_by) {
+        s.colour_by = (ColourBy)c;
+        s.req.colours = true;
+        if (s.colour_by != ColourBy::Max && !s.stats.ready() && !s.stats.running) s.req.stats_start = true;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the exact maximum over each triangle, or the exact mean or RMS over it\n"
+                                                  "(these need the statistics: every triangle's full construction)");
+    if (s.colour_by != ColourBy::Max && !s.stats.ready())
+        ImGui::TextDisabled("%s: once the statistics are computed; max until then", items[(int)s.colour_by]);
+}
+
 void colormap_section(AppState& s) {
     const int d = s.direction;
+    static const char* kQuantity[3] = {"max", "mean", "RMS"};
+    const bool by_stats = s.colour_by != ColourBy::Max && s.stats.ready();
     char title[96];
-    std::snprintf(title, sizeof title, "Colour map: max distance on %s###colormap", kSide[d]);
+    std::snprintf(title, sizeof title, "Colour map: %s distance on %s###colormap", kQuantity[by_stats ? (int)s.colour_by : 0], kSide[d]);
     if (!ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen)) return;
     ColourRange& r = s.range[d];
     if (!r.valid) {
@@ -252,6 +276,7 @@ void colormap_section(AppState& s) {
     }
     colour_bar(s, r);
     exact_section(s);
+    colour_by_combo(s);   // (below: the fill-in's Cancel keeps its place)
 }
 
 void meshes_section(AppState& s) {
@@ -669,6 +694,8 @@ void draw_panels(AppState& s) {
     ImGui::Separator();
     direction_section(s);
     colormap_section(s);
+    draw_stats_section(s);
+    draw_tolerance_section(s);
     meshes_section(s);
     open_section(s);
     cases_section(s);

@@ -33,31 +33,35 @@ void GpuMesh::upload(const TriangleMesh& m, const Vec3& origin) {
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void*)0);
     glEnableVertexAttribArray(1);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void*)(3 * sizeof(float)));
-    glGenBuffers(1, &vbo_value_);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_value_);
     std::vector<float> unknown(vertex_count_, -1.0f);   // not yet exact until values are set
-    glBufferData(GL_ARRAY_BUFFER, unknown.size() * sizeof(float), unknown.data(), GL_DYNAMIC_DRAW);
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(float), (void*)0);
+    GLuint* per_triangle[2] = {&vbo_value_, &vbo_max_};   // attributes 2 and 3
+    for (int k = 0; k < 2; ++k) {
+        glGenBuffers(1, per_triangle[k]);
+        glBindBuffer(GL_ARRAY_BUFFER, *per_triangle[k]);
+        glBufferData(GL_ARRAY_BUFFER, unknown.size() * sizeof(float), unknown.data(), GL_DYNAMIC_DRAW);
+        glEnableVertexAttribArray(2 + k);
+        glVertexAttribPointer(2 + k, 1, GL_FLOAT, GL_FALSE, sizeof(float), (void*)0);
+    }
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void GpuMesh::set_values(const std::vector<double>& per_triangle) {
-    if (!vbo_value_) return;
+void GpuMesh::upload_values(GLuint vbo, const std::vector<double>& per_triangle) {
+    if (!vbo) return;
     std::vector<float> v(vertex_count_, -1.0f);
     for (size_t t = 0; t < per_triangle.size() && 3 * t + 2 < v.size(); ++t)
         v[3 * t] = v[3 * t + 1] = v[3 * t + 2] = per_triangle[t] >= 0 ? float(per_triangle[t]) : -1.0f;
-    glBindBuffer(GL_ARRAY_BUFFER, vbo_value_);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glBufferSubData(GL_ARRAY_BUFFER, 0, v.size() * sizeof(float), v.data());
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
 void GpuMesh::destroy() {
     if (vbo_value_) glDeleteBuffers(1, &vbo_value_);
+    if (vbo_max_) glDeleteBuffers(1, &vbo_max_);
     if (vbo_) glDeleteBuffers(1, &vbo_);
     if (vao_) glDeleteVertexArrays(1, &vao_);
-    vao_ = vbo_ = vbo_value_ = 0;
+    vao_ = vbo_ = vbo_value_ = vbo_max_ = 0;
     vertex_count_ = 0;
 }
 
@@ -118,6 +122,8 @@ void Scene::draw_mesh(const ViewParams& p, int side, bool transparent_pass) cons
     glUniform1f(glGetUniformLocation(program_, "u_opacity"), st.opacity);
     glUniform1i(glGetUniformLocation(program_, "u_use_map"), measured && p.use_map ? 1 : 0);
     glUniform1i(glGetUniformLocation(program_, "u_selected"), measured ? p.selected : -1);
+    glUniform1f(glGetUniformLocation(program_, "u_tolerance"), measured ? p.tolerance : -1.0f);
+    glUniform1f(glGetUniformLocation(program_, "u_outline"), p.outline);
     GLint mode = glGetUniformLocation(program_, "u_mode");
     glDepthMask(transparent ? GL_FALSE : GL_TRUE);
     if (st.mode == DrawMode::Wireframe) {

@@ -30,13 +30,16 @@ public:
     ~GpuMesh() { destroy(); }
     void upload(const TriangleMesh& m, const Vec3& origin);
     // The colour map's scalar per triangle; a negative value: not yet exact (drawn hatched grey).
-    void set_values(const std::vector<double>& per_triangle);
+    void set_values(const std::vector<double>& per_triangle) { upload_values(vbo_value_, per_triangle); }
+    // The exact maximum per triangle (negative: unknown), compared with the tolerance.
+    void set_maxima(const std::vector<double>& per_triangle) { upload_values(vbo_max_, per_triangle); }
     void destroy();
     bool empty() const { return vertex_count_ == 0; }
     void draw() const;
 
 private:
-    GLuint vao_ = 0, vbo_ = 0, vbo_value_ = 0;
+    void upload_values(GLuint vbo, const std::vector<double>& per_triangle);
+    GLuint vao_ = 0, vbo_ = 0, vbo_value_ = 0, vbo_max_ = 0;
     GLsizei vertex_count_ = 0;
 };
 
@@ -51,6 +54,8 @@ struct ViewParams {
     float lo = 0, hi = 1;             // colour map range
     float hatch = 8;                  // period of the "not yet exact" stripes (framebuffer pixels)
     int selected = -1;                // selected triangle of the measured mesh
+    float tolerance = -1;             // >= 0: outline the measured mesh's triangles whose maximum exceeds it
+    float outline = 3;                // their outline's width (framebuffer pixels)
 };
 
 class Scene {
@@ -60,6 +65,7 @@ public:
     void set_meshes(const TriangleMesh& a, const TriangleMesh& b);
     void clear();
     void set_values(int side, const std::vector<double>& per_triangle) { mesh_[side].set_values(per_triangle); }
+    void set_maxima(int side, const std::vector<double>& per_triangle) { mesh_[side].set_maxima(per_triangle); }
     bool loaded() const { return loaded_; }
     const Vec3& origin() const { return origin_; }
     glm::vec3 local(const Vec3& world) const {

@@ -1,3 +1,4 @@
+#include "tolerance_view.h"
 #include "stepper.h"
 
 #include <algorithm>
@@ -177,6 +178,11 @@ float checkbox_width(const char* label) {
 }  // namespace
 
 std::string event_summary(const Event& e) { return event_text(e); }
+
+void face_polygon(const DomainMesh& m, int f, std::vector<Vec2>& outer, std::vector<int>& tris) {
+    outer = simplify(m.sample_loop(m.faces()[f].loops[0], 24));
+    tris = triangulate(outer);
+}
 unsigned domain_label_colour(const DomainLabel& l, bool infinite) { return label_colour(l, infinite); }
 
 // ---- Stepper
@@ -420,8 +426,7 @@ void Stepper::rebuild() {
         d.infinite = F[f].infinite;
         d.colour = label_colour(d.label, d.infinite);
         d.area = m->face_area(f);
-        d.outer = simplify(m->sample_loop(F[f].loops[0], 24));
-        d.tris = triangulate(d.outer);
+        face_polygon(*m, f, d.outer, d.tris);
         domains.push_back(std::move(d));
     }
     // Outer loops in decreasing area: a face inside another's hole is drawn over it.
@@ -660,6 +665,8 @@ void draw_domain_view(AppState& s) {
         for (const Vec2& p : d.outer) dl->PrimWriteVtx(to_screen(p), uv, d.colour);
         for (int i : d.tris) dl->PrimWriteIdx((ImDrawIdx)(base + i));
     }
+    // The tolerance: the part above T shaded, the curve d = T.
+    draw_tolerance_in_domain_view(s, dl, c0, c1, to_screen, !overlay);
     // Arcs: region boundaries thin, conics thick, the target's boundary white.
     std::vector<ImVec2> pts;
     for (const ArcDraw& a : st.arcs) {

@@ -159,6 +159,10 @@ struct Stepper {
     const Event* regions_event() const;
 };
 
+// The outer loop of face f sampled (frame coordinates, straight runs merged) and triangulated
+// (index triples into `outer`), as the domain view fills it.
+void face_polygon(const DomainMesh& m, int f, std::vector<Vec2>& outer, std::vector<int>& tris);
+
 // The colour of a domain label in the 2D domain view (ImU32), shared by the graph view.
 unsigned domain_label_colour(const DomainLabel& l, bool infinite);
 
