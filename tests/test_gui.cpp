@@ -791,7 +791,7 @@ TEST(Gui, GraphMaximumIsTheSolversMaximum) {
     // Mid-construction: the last event of an insertion (the one before the next source is chosen).
     const long mid = first_event(demo_trace_lines(dir), "source_chosen", 50) - 1;
     ASSERT_GT(mid, 0);
-    for (const std::string step : {std::string("end"), std::to_string(mid)}) {
+    for (const std::string& step : {std::string("end"), std::to_string(mid)}) {
         Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", step, "--graph"}, png, dir);
         ASSERT_EQ(o.code, 0) << o.err;
         const size_t at = o.out.find("\"graph\"");

@@ -146,7 +146,7 @@ def test_python_batch_stats_equal_cli(grids, tmp_path):
     V, F, a, W, G, b = grids
     files = [b, DEMO_B, str(tmp_path / "missing.obj")]
     flags = ["--stats", "--histogram", 2, "--tolerance", 0.2]
-    code, out, err = run_cli("batch", a, *files, "--json", *flags)
+    code, out, err = run_cli("batch", a, *files, "--json", "--jobs", 2, *flags)  # one thread per pair, as below
     assert code == 2, err                                          # the missing file
     lines = {it["index"]: it for it in map(json.loads, out[:-1])}
     got = list(hlens.batch(a, files, stats=True, histogram=2, tolerance=0.2, jobs=2))
