@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <future>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -34,6 +35,7 @@
 #include "json_value.h"
 #include "mesh.h"
 #include "mesh_io.h"
+#include "parallel.h"
 #include "report.h"
 #include "surface_stats.h"
 #include "target_solver.h"
@@ -383,11 +385,19 @@ int early_tolerance_verdict(const Args& args, const TriangleMesh& A, const Trian
     return -1;
 }
 
+// A and B, read at the same time when more than one thread may be used. A's error comes first,
+// as when they are read one after the other.
+std::pair<TriangleMesh, TriangleMesh> load_pair(const Args& args, const LoadOptions& lo) {
+    if (resolve_threads(args.threads) < 2) return {load_mesh(args.files[0], lo), load_mesh(args.files[1], lo)};
+    std::future<TriangleMesh> b = std::async(std::launch::async, [&] { return load_mesh(args.files[1], lo); });
+    TriangleMesh A = load_mesh(args.files[0], lo);  // if this throws, b's destructor waits for it
+    return {std::move(A), b.get()};
+}
+
 int run_distance(const Args& args) {
     LoadOptions lo;
     lo.weld = args.weld;
-    TriangleMesh A = load_mesh(args.files[0], lo);
-    TriangleMesh B = load_mesh(args.files[1], lo);
+    auto [A, B] = load_pair(args, lo);
     if (args.tolerance >= 0 && !args.stats && args.export_errors.empty()) {
         const int code = early_tolerance_verdict(args, A, B);
         if (code >= 0) return code;

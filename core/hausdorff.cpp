@@ -119,7 +119,7 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
 
 HausdorffResult hausdorff(const TriangleMesh& A, const TriangleMesh& B, const HausdorffOptions& opt, bool one_sided_only) {
     auto t0 = Clock::now();
-    const VoxelGrid grid(A, B);
+    const VoxelGrid grid(A, B, 1.0, opt.threads);
     HausdorffResult r = hausdorff(grid, opt, one_sided_only);
     r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return r;

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 
+#include "parallel.h"
 #include "point_triangle.h"
 
 namespace hlens {
@@ -90,6 +92,15 @@ MeshGrid::MeshGrid(const TriangleMesh& mesh, double k) : mesh_(&mesh) {
                     if (f.occ[(size_t(kk) * f.ny + j) * f.nx + i]) c.occ[(size_t(kk / 2) * c.ny + j / 2) * c.nx + i / 2] = 1;
         pyramid_.push_back(std::move(c));
     }
+}
+
+VoxelGrid::VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double k, int threads) {
+    // Two threads pay off only when both grids take a while to build.
+    const bool both = resolve_threads(threads) > 1 && std::min(a.num_triangles(), b.num_triangles()) > 20000;
+    std::future<std::shared_ptr<const MeshGrid>> gb;
+    if (both) gb = std::async(std::launch::async, [&] { return std::make_shared<const MeshGrid>(b, k); });
+    grid_[0] = std::make_shared<const MeshGrid>(a, k);
+    grid_[1] = both ? gb.get() : std::make_shared<const MeshGrid>(b, k);
 }
 
 std::array<int, 3> MeshGrid::coords(size_t idx) const {

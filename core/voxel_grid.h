@@ -87,9 +87,9 @@ private:
 // (hlens-cli batch indexes its reference once).
 class VoxelGrid {
 public:
-    // Keeps pointers to a and b: they must outlive it.
-    VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double triangles_per_voxel = 1.0)
-        : grid_{std::make_shared<const MeshGrid>(a, triangles_per_voxel), std::make_shared<const MeshGrid>(b, triangles_per_voxel)} {}
+    // Keeps pointers to a and b: they must outlive it. Large meshes' grids are built on two threads
+    // (`threads` 0: all cores; 1: one after the other).
+    VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double triangles_per_voxel = 1.0, int threads = 0);
     // From grids already built (their meshes must outlive them).
     VoxelGrid(std::shared_ptr<const MeshGrid> a, std::shared_ptr<const MeshGrid> b) : grid_{std::move(a), std::move(b)} {}
 
