@@ -133,9 +133,7 @@ void TargetSolver::begin() {
     // keeps one per target), but only the one being run uses the stamps at a time.
     const MeshGrid& g = grid_.of(1 - side_);
     seen_ = std::make_unique<Seen>(g.num_voxels(), g.mesh().num_triangles());
-    const Box3 gb = g.box();
-    outside_grid_ = !(box_.lo.x >= gb.lo.x && box_.lo.y >= gb.lo.y && box_.lo.z >= gb.lo.z && box_.hi.x <= gb.hi.x &&
-                      box_.hi.y <= gb.hi.y && box_.hi.z <= gb.hi.z);
+    outside_grid_ = !g.box().contains(box_);
     if (!outside_grid_)
         for (size_t v : g.voxels_of_triangle(corners_)) {
             target_voxels_.push_back(g.coords(v));

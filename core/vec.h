@@ -57,6 +57,9 @@ struct Box3 {
     void add(const Vec3& p) { lo = vmin(lo, p); hi = vmax(hi, p); }
     void add(const Box3& b) { lo = vmin(lo, b.lo); hi = vmax(hi, b.hi); }
     bool empty() const { return lo.x > hi.x; }
+    bool contains(const Box3& b) const {
+        return b.lo.x >= lo.x && b.lo.y >= lo.y && b.lo.z >= lo.z && b.hi.x <= hi.x && b.hi.y <= hi.y && b.hi.z <= hi.z;
+    }
     Vec3 extent() const { return hi - lo; }
     double diagonal() const { return empty() ? 0.0 : norm(hi - lo); }
 };

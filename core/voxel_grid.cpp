@@ -186,7 +186,8 @@ MeshGrid::Nearest MeshGrid::nearest(const Vec3& p, uint32_t hint) const {
     const auto c0 = locate(p);
     const int n[3] = {nx, ny, nz};
     const double s = voxel_size, m = margin_;
-    const Vec3 glo = origin - Vec3(m, m, m), ghi = origin + Vec3(nx, ny, nz) * s + Vec3(m, m, m);
+    const Box3 grid_box = box();
+    const Vec3 glo = grid_box.lo, ghi = grid_box.hi;
     auto visit = [&](int i, int j, int k) {
         Vec3 lo = origin + Vec3(i, j, k) * s - Vec3(m, m, m);
         if (point_box_distance2(p, lo, lo + Vec3(s + 2 * m, s + 2 * m, s + 2 * m)) > best.dist2) return;
