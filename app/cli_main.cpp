@@ -332,10 +332,9 @@ StatsOptions stats_options(const Args& args) {
 
 // Exact surface statistics per direction (core/surface_stats.h), when --stats or --export-errors
 // asks for them; empty otherwise.
-std::vector<SurfaceStats> direction_stats(const Args& args, const TriangleMesh& A, const TriangleMesh& B,
-                                          const HausdorffResult& r) {
+std::vector<SurfaceStats> direction_stats(const Args& args, const VoxelGrid& grid, const HausdorffResult& r) {
     if (!args.stats && args.export_errors.empty()) return {};
-    return hlens::direction_stats(A, B, r, args.one_sided, stats_options(args));
+    return hlens::direction_stats(grid, r, args.one_sided, stats_options(args));
 }
 
 void print_stats(const Args& args, const std::vector<SurfaceStats>& stats, size_t i) {
@@ -367,8 +366,8 @@ void export_errors(const Args& args, const TriangleMesh& A, const TriangleMesh& 
 
 // --tolerance without --stats: a verdict. A vertex farther than T (exact point-mesh distance)
 // proves h > T at once: report it and stop (-1: no such vertex, run the whole computation).
-int early_tolerance_verdict(const Args& args, const TriangleMesh& A, const TriangleMesh& B) {
-    VoxelGrid grid(A, B);
+int early_tolerance_verdict(const Args& args, const VoxelGrid& grid) {
+    const TriangleMesh &A = grid.mesh(0), &B = grid.mesh(1);
     for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
         const SampledBound sb = sampled_lower_bound(side == 0 ? A : B, grid, side, 1);
         if (!(sb.value > args.tolerance)) continue;
@@ -398,21 +397,23 @@ int run_distance(const Args& args) {
     LoadOptions lo;
     lo.weld = args.weld;
     auto [A, B] = load_pair(args, lo);
+    const IndexedPair pair(A, B, args.threads);  // for the early verdict, the distance, --verify and --stats
+    const VoxelGrid& grid = pair.grid;
     if (args.tolerance >= 0 && !args.stats && args.export_errors.empty()) {
-        const int code = early_tolerance_verdict(args, A, B);
+        const int code = early_tolerance_verdict(args, grid);
         if (code >= 0) return code;
     }
 
     HausdorffOptions opt;
     opt.mode = args.mode;
     opt.threads = args.threads;
-    const int threads = args.threads > 0 ? args.threads : (int)std::max(1u, std::thread::hardware_concurrency());
+    const int threads = resolve_threads(args.threads);
     const double diagonal = report_diagonal(A, B);
     ProgressBar bar;
     if (isatty(2)) opt.progress = [&bar](double f) { bar.update(f); };
     HausdorffResult r;
     try {
-        r = hausdorff(A, B, opt, args.one_sided);
+        r = pair.distance(opt, args.one_sided);
     } catch (...) {
         bar.clear();
         throw;
@@ -424,7 +425,6 @@ int run_distance(const Args& args) {
     struct Check { LipschitzBound bound; bool ok; };
     std::vector<Check> checks;
     if (args.verify) {
-        VoxelGrid grid(A, B);
         const double diag = std::max(A.bounds().diagonal(), B.bounds().diagonal());
         for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
             const OneSidedResult& o = side == 0 ? r.a_to_b : r.b_to_a;
@@ -433,7 +433,7 @@ int run_distance(const Args& args) {
         }
     }
     const bool verified = std::all_of(checks.begin(), checks.end(), [](const Check& c) { return c.ok; });
-    const std::vector<SurfaceStats> stats = direction_stats(args, A, B, r);
+    const std::vector<SurfaceStats> stats = direction_stats(args, grid, r);
     export_errors(args, A, B, stats);
     const bool within = args.tolerance < 0 || reported_distance(r, args.one_sided) <= args.tolerance;
     const int code = !verified ? 3 : within ? 0 : 4;

@@ -24,9 +24,20 @@ double reported_distance(const HausdorffResult& r, bool one_sided) {
     return one_sided ? r.a_to_b.distance : r.hausdorff;
 }
 
-std::vector<SurfaceStats> direction_stats(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
-                                          bool one_sided, const StatsOptions& base) {
-    return direction_stats(VoxelGrid(A, B), r, one_sided, base);
+static double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+IndexedPair::IndexedPair(const TriangleMesh& A, const TriangleMesh& B, int threads)
+    : IndexedPair(A, B, threads, std::chrono::steady_clock::now()) {}
+
+IndexedPair::IndexedPair(const TriangleMesh& A, const TriangleMesh& B, int threads, std::chrono::steady_clock::time_point start)
+    : grid(A, B, 1.0, threads), grid_seconds(seconds_since(start)) {}
+
+HausdorffResult IndexedPair::distance(const HausdorffOptions& opt, bool one_sided) const {
+    HausdorffResult r = hausdorff(grid, opt, one_sided);
+    r.seconds += grid_seconds;
+    return r;
 }
 
 std::vector<SurfaceStats> direction_stats(const VoxelGrid& grid, const HausdorffResult& r, bool one_sided,

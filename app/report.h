@@ -3,6 +3,7 @@
 // events of one target (`trace --json`, hlens.trace()). Building them in one place keeps the
 // fields and the numbers of the CLI and of Python identical.
 #pragma once
+#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
@@ -38,11 +39,21 @@ constexpr int kMaxHistogramBins = 100000;
 // the result `r` of A against B, as --stats reports them: surface_stats() with `base`'s options
 // (threads, percentiles, histogram_bins, tolerance, cancel) and the direction's distance as its
 // known maximum. base.progress, if set, is called with the fraction of both directions together.
-std::vector<SurfaceStats> direction_stats(const TriangleMesh& A, const TriangleMesh& B, const HausdorffResult& r,
-                                          bool one_sided, const StatsOptions& base);
-// The same on the pair's grids already built.
+// `grid`: the pair's voxel grids (A = grid.mesh(0), B = grid.mesh(1)).
 std::vector<SurfaceStats> direction_stats(const VoxelGrid& grid, const HausdorffResult& r, bool one_sided,
                                           const StatsOptions& base);
+
+// The distance of A and B as hausdorff(A, B) computes and times it (its seconds include building the
+// grids), keeping the grids for what follows (the early verdict, --verify, --stats).
+struct IndexedPair {
+    IndexedPair(const TriangleMesh& A, const TriangleMesh& B, int threads);
+    HausdorffResult distance(const HausdorffOptions& opt, bool one_sided) const;
+    const VoxelGrid grid;
+    const double grid_seconds;  // the time building `grid` took
+
+private:
+    IndexedPair(const TriangleMesh& A, const TriangleMesh& B, int threads, std::chrono::steady_clock::time_point start);
+};
 
 // The diagonal that "relative" values divide by: of the union of both meshes' bounding boxes (as
 // metro and MeshLab report it).

@@ -107,12 +107,13 @@ Result distance(py::handle VA, py::handle FA, py::handle VB, py::handle FB, bool
             ProgressSplit split(job, one_sided, stats ? 0.05 : 1.0);
             opt.cancel = &job.cancel;
             opt.progress = [&](double f) { split.distance(f); };
-            r = hausdorff(A, B, opt, one_sided);
+            const IndexedPair pair(A, B, opt.threads);  // for the distance and the statistics
+            r = pair.distance(opt, one_sided);
             if (!stats) return;
             StatsOptions so = stats_options(opt.threads, bins, ro.tolerance);
             so.cancel = &job.cancel;
             so.progress = [&](double f) { split.stats(f); };
-            st = direction_stats(A, B, r, one_sided, so);
+            st = direction_stats(pair.grid, r, one_sided, so);
         },
         progress);
     if (stats) ro.stats = &st;
