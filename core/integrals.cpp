@@ -358,6 +358,24 @@ DomainIntegrals domain_integrals(const DomainMesh& m) {
     return r;
 }
 
+void split_at_level(DomainMesh& m, double t2, const std::function<void(int face, bool above, bool split)>& visit) {
+    const size_t nfaces = m.faces().size();
+    for (size_t f = 1; f < nfaces; ++f) {
+        const DomainMesh::Face& F = m.faces()[f];
+        if (!F.alive || F.infinite) continue;
+        const Interval r = convex_range(F.poly, m.face_box((int)f));
+        if (r.hi <= t2) continue;                                   // wholly at or below t
+        if (r.lo > t2) { visit((int)f, true, false); continue; }
+        Quadratic2 g = F.poly;
+        g.f -= t2;
+        // The mesh's cache of face boxes can be left stale by an edit (the construction's and
+        // split_face's own: found by cached_face_box's debug check, by about 1e-7 here), and
+        // split_face trusts it: each split starts from freshly computed boxes.
+        m.forget_face_boxes();
+        for (const DomainMesh::SplitPiece& piece : m.split_face((int)f, g)) visit(piece.face, piece.sign > 0, true);
+    }
+}
+
 namespace {
 // The levels' work on one mesh: face areas kept per face id until a split changes the face, and
 // the faces' ranges, so a level that cuts no face needs neither a copy nor a split.
@@ -401,24 +419,17 @@ double LevelClipper::above(double t2) {
         last_cut = t;
     }
     double sum = 0;
-    const size_t nfaces = mesh().faces().size();
-    for (size_t f = 1; f < nfaces; ++f) {
-        const DomainMesh::Face& F = mesh().faces()[f];
-        if (!F.alive || F.infinite) continue;
-        const Interval r = convex_range(F.poly, mesh().face_box((int)f));
-        if (r.hi <= t2) continue;                                   // wholly at or below t
-        if (r.lo > t2) { sum += face_area((int)f); continue; }
-        Quadratic2 g = F.poly;
-        g.f -= t2;
-        // The mesh's cache of face boxes can be left stale by an edit (the construction's and
-        // split_face's own: found by cached_face_box's debug check, by about 1e-7 here), and
-        // split_face trusts it: each split starts from freshly computed boxes.
-        copy->forget_face_boxes();
-        for (const DomainMesh::SplitPiece& piece : copy->split_face((int)f, g)) {
-            if ((size_t)piece.face < area.size()) area[piece.face] = NAN;  // a changed face
-            if (piece.sign > 0) sum += face_area(piece.face);
-        }
+    auto add = [&](int f, bool above, bool split) {
+        if (split && (size_t)f < area.size()) area[f] = NAN;  // a changed face
+        if (above) sum += face_area(f);
+    };
+    if (copy) {
+        split_at_level(*copy, t2, add);
+        return sum;
     }
+    const auto& F = pristine.faces();  // no face straddles t2 (no copy yet): nothing to split
+    for (size_t f = 1; f < F.size(); ++f)
+        if (F[f].alive && !F[f].infinite && convex_range(F[f].poly, pristine.face_box((int)f)).lo > t2) add((int)f, true, false);
     return sum;
 }
 }  // namespace

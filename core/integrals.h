@@ -29,6 +29,7 @@
 // All values here are in the target's frame units (TargetFrame::scale converts: areas by scale^2,
 // the integral of d^2 by scale^4, the integral of d by scale^3).
 #pragma once
+#include <functional>
 #include <vector>
 
 #include "domain_mesh.h"
@@ -56,6 +57,12 @@ struct DomainIntegrals {
     double max_d2 = 0;         // the largest face maximum (DomainMesh::Face::max_value)
 };
 DomainIntegrals domain_integrals(const DomainMesh& m);
+
+// One level t2 of d^2 on a domain mesh, in face order: a live finite face wholly above it is
+// visited as visit(f, true, false); one that straddles it is split along d^2 - t2 (split_face, from
+// freshly computed face boxes) and each piece visited as visit(piece, d^2 > t2 on it, true). Faces
+// at or below t2 are not visited.
+void split_at_level(DomainMesh& m, double t2, const std::function<void(int face, bool above, bool split)>& visit);
 
 // Area (frame units) of the part of the target where d^2 > t2, for each t2 of `levels`
 // (ascending), by splitting one copy of the mesh by P - t2 level after level (no copy while no

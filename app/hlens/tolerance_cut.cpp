@@ -10,34 +10,24 @@ namespace hlens::gui {
 
 namespace {
 
-// Splits every face of `m` that straddles P = t2; marks the faces above it (per face id) and
-// collects the new arcs on the level (their equation: P - t2 normalised, as split_face keeps it).
+// Splits every face of `m` that straddles P = t2 (core's split_at_level); marks the faces above
+// it (per face id) and collects the new arcs on the level: the edges a split made whose equation is
+// the face's P - t2 (normalised, as split_face keeps it).
 void split_at_level(DomainMesh& m, double t2, std::vector<char>& above, std::vector<int>& curve_edges) {
-    const size_t nf = m.faces().size();
-    above.assign(nf, 0);
-    for (size_t f = 1; f < nf; ++f) {
-        const DomainMesh::Face& F = m.faces()[f];
-        if (!F.alive || F.infinite) continue;
-        const Interval r = convex_range(F.poly, m.face_box((int)f));
-        if (r.hi <= t2) continue;
-        if (r.lo > t2) {
-            above[f] = 1;
-            continue;
-        }
-        Quadratic2 g = F.poly;
+    above.assign(m.faces().size(), 0);
+    size_t scanned = m.edges().size();
+    hlens::split_at_level(m, t2, [&](int f, bool up, bool split) {
+        if ((size_t)f >= above.size()) above.resize(f + 1, 0);
+        above[f] = up;
+        if (!split) return;
+        Quadratic2 g = m.faces()[f].poly;  // a piece keeps the polynomial of the face it came from
         g.f -= t2;
         const Quadratic2 normalised = g * (1.0 / g.scale());
-        const size_t e0 = m.edges().size();
-        m.forget_face_boxes();   // (integrals.cpp: split_face trusts the box cache)
-        for (const DomainMesh::SplitPiece& piece : m.split_face((int)f, g)) {
-            if ((size_t)piece.face >= above.size()) above.resize(piece.face + 1, 0);
-            above[piece.face] = piece.sign > 0;
+        for (; scanned < m.edges().size(); ++scanned) {
+            const Quadratic2& q = m.edges()[scanned].equation;
+            if (m.edges()[scanned].alive && (q - normalised).scale() == 0) curve_edges.push_back((int)scanned);
         }
-        for (size_t e = e0; e < m.edges().size(); ++e) {
-            const Quadratic2& q = m.edges()[e].equation;
-            if (m.edges()[e].alive && (q - normalised).scale() == 0) curve_edges.push_back((int)e);
-        }
-    }
+    });
     above.resize(m.faces().size(), 0);
 }
 
