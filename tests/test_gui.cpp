@@ -685,11 +685,8 @@ TEST(Gui, EventLogListsEveryEventOfTheTarget) {
     const size_t at = o.out.find("\"event_log\"");
     ASSERT_NE(at, std::string::npos) << o.out;
     const long shown = (long)num(o.out, "shown", at), total = (long)num(o.out, "total", at);
-    Outcome t = run({kCli, "trace", kDemoB, kDemoA, "--target", "22", "--json"}, dir);
-    ASSERT_EQ(t.code, 0) << t.err;
-    long lines = 0;
-    std::istringstream in(t.out);
-    for (std::string l; std::getline(in, l);) lines += !l.empty();
+    const std::vector<std::string> trace = demo_trace_lines(dir);
+    const long lines = (long)std::count_if(trace.begin(), trace.end(), [](const std::string& l) { return !l.empty(); });
     EXPECT_EQ(total, lines - 1);
     EXPECT_EQ(shown, total);
     EXPECT_GT(total, 100);
@@ -856,11 +853,8 @@ TEST(Gui, DragInTheGraphOrbitsTheGraph) {
 TEST(Gui, VoxelsFollowTheEventStream) {
     REQUIRE_XVFB();
     fs::path dir = scratch_dir();
-    Outcome t = run({kCli, "trace", kDemoB, kDemoA, "--target", "22", "--json"}, dir);
-    ASSERT_EQ(t.code, 0) << t.err;
-    std::vector<std::string> lines;
-    std::istringstream in(t.out);
-    for (std::string l; std::getline(in, l);) lines.push_back(l);
+    const std::vector<std::string> lines = demo_trace_lines(dir);
+    ASSERT_FALSE(lines.empty());
     for (const char* step : {"40", "end"}) {
         fs::path png = dir / (std::string("voxels-") + step + ".png");
         Outcome o = run_gui({"--direction", "ba", "--target", "22", "--step", step}, png, dir);
