@@ -39,6 +39,11 @@ def write_obj(path, V, F):
     return str(path)
 
 
+# The fast mode's work counters depend on the threads' schedule: a thread that raises the shared lower
+# bound first lets the others skip more targets. Runs on several threads agree on every other number.
+SCHEDULED = ("exact_targets", "exact_solves")
+
+
 def without(d, *keys):
     """A copy of a report without fields that legitimately differ between runs (times, paths)."""
     if isinstance(d, dict):

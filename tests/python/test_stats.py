@@ -10,15 +10,16 @@ import numpy as np
 import pytest
 
 import hlens
-from conftest import DEMO_A, DEMO_B, run_cli, without, write_obj
+from conftest import DEMO_A, DEMO_B, SCHEDULED, run_cli, without, write_obj
 from test_distance import assert_same_report
 
 DIRECTIONS = ("a_to_b", "b_to_a")
 
 
 def untimed(report):
-    """The report without its times (and the paths and thread count, which legitimately differ)."""
-    r = without(report, "seconds", "threads", "path")
+    """The report without its times (and the paths, thread count and scheduled work counters, which
+    legitimately differ)."""
+    r = without(report, "seconds", "threads", "path", *SCHEDULED)
     for d in DIRECTIONS:
         if d in r and "stats_seconds" in r[d]:
             r[d]["stats_seconds"] = without(r[d]["stats_seconds"], "first_pass", "percentiles")
