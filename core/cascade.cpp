@@ -369,7 +369,7 @@ private:
 
 void TargetTable::resize(size_t n) {
     value_sq.assign(n, -1.0);
-    where.assign(n, Vec3{});
+    where.assign(n, Vec2{});
     slack.assign(n, 0.0);
     bound.assign(n, 0.0);
     exact.assign(n, 0);
@@ -377,7 +377,7 @@ void TargetTable::resize(size_t n) {
 
 void TargetTable::record(uint32_t t, const TargetSolver& whole) {
     value_sq[t] = whole.max_sq();
-    where[t] = whole.max_point();
+    where[t] = whole.max_point_2d();
     slack[t] = whole.slack();
     bound[t] = std::sqrt(whole.max_sq());
     exact[t] = 1;

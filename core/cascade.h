@@ -15,7 +15,7 @@ namespace hlens {
 // What the per-target loop found, per target of the measured mesh (world units).
 struct TargetTable {
     std::vector<double> value_sq;   // exact max of d^2 over the target, -1 where not solved whole
-    std::vector<Vec3> where;        // where value_sq is attained
+    std::vector<Vec2> where;        // where value_sq is attained, in the target's frame (TargetSolver's)
     std::vector<double> slack;      // sliver targets: how far the true maximum may lie above
     std::vector<double> bound;      // max distance over the target: exact, or an upper bound
     std::vector<uint8_t> exact;     // bound[t] is the exact maximum

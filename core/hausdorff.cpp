@@ -32,6 +32,30 @@ std::string format_g17(double v) {
     return buf;
 }
 
+// The distance from the point origin + offset to the mesh of `grid`, computed without forming
+// that point: each triangle is taken relative to `origin` (an input point), so the result is off
+// by rounding relative to the distances involved, not to the coordinates' magnitude (which would
+// be an ulp of 1e6 for a mesh of size 1 far from the origin). The grid's nearest point to the
+// rounded sum bounds which triangles can be nearest; `to_point` is the nearest point.
+double witness_distance(const MeshGrid& grid, const Vec3& origin, const Vec3& offset, Vec3& to_point) {
+    const TriangleMesh& B = grid.mesh();
+    const Vec3 p = origin + offset;
+    const MeshGrid::Nearest q = grid.nearest(p);
+    to_point = q.point;
+    if (q.triangle == UINT32_MAX) return HUGE_VAL;
+    // |p - (origin + offset)| <= half an ulp per axis; triangles farther than d0 + 2 eps from p
+    // are farther from the exact point than the one found.
+    const double eps = 0x1p-53 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z)) * (1 + 1e-9);
+    const double reach = (std::sqrt(q.dist2) + 3 * eps) * (1 + 1e-12);
+    double best = HUGE_VAL;
+    for (size_t t = 0; t < B.num_triangles(); ++t) {
+        const auto c = B.corners(t);
+        if (point_box_distance2(p, vmin(c[0], vmin(c[1], c[2])), vmax(c[0], vmax(c[1], c[2]))) > reach * reach) continue;
+        best = std::min(best, closest_point_on_triangle(offset, c[0] - origin, c[1] - origin, c[2] - origin).dist2);
+    }
+    return std::sqrt(best);
+}
+
 // Paper mode, Algorithm 1: every target gets the full construction.
 void paper_targets(const VoxelGrid& grid, int side, const HausdorffOptions& opt, TargetTable& out) {
     const size_t n = grid.mesh(side).num_triangles();
@@ -91,15 +115,22 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
     r.exact_solves = tab.solves;
     if (best >= 0) {
         r.distance = std::sqrt(best);
-        r.from_point = tab.where[r.target];
-        // lower: the true distance from the witness point to B, by exact point-triangle distances
-        // over the whole of B, independently of the domain meshes.
-        VoxelGrid::Nearest q = grid.nearest(1 - side, r.from_point);
-        r.to_point = q.point;
-        r.lower = std::min(r.distance, std::sqrt(q.dist2));
-        // upper: the domain meshes' maximum, widened by a bound on the rounding of coordinates.
+        // The witness in world coordinates, as TargetSolver::max_point() gives it, and its offset
+        // from the target's frame origin (a corner of the target, an input point).
+        const TargetFrame frame = TargetFrame::make(A.corners(r.target));
+        const Vec2 w = tab.where[r.target];
+        r.from_point = frame.to_world(w);
+        const Vec3 offset = (w.x * frame.scale) * frame.e1 + (w.y * frame.scale) * frame.e2;
         Box3 box = A.bounds();
         box.add(B.bounds());
+        // lower: the true distance from the witness to B, by exact point-triangle distances over
+        // the whole of B, independently of the domain meshes, less their rounding (relative to
+        // the distances: the witness is never formed in world coordinates, see witness_distance).
+        Vec3 to_point;
+        const double d_witness = witness_distance(grid.of(1 - side), frame.origin, offset, to_point);
+        r.to_point = to_point;
+        r.lower = std::max(0.0, std::min(r.distance, d_witness - 16 * 0x1p-52 * (box.diagonal() + d_witness)));
+        // upper: the domain meshes' maximum, widened by a bound on the rounding of coordinates.
         double coord = coordinate_magnitude(A, B);
         r.upper = std::max(r.distance, tab.piece_upper);
         for (size_t t = 0; t < n; ++t)  // a sliver target's value may be short by its height

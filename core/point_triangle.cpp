@@ -5,9 +5,13 @@ namespace hlens {
 ClosestPoint closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
     Vec3 ab = b - a;
     double l2 = norm2(ab);
-    double t = l2 > 0 ? dot(p - a, ab) / l2 : 0.0;
-    Vec3 q = t <= 0 ? a : (t >= 1 ? b : a + ab * t);  // ends exactly, never a rounded a + 1*ab
-    return {q, norm2(p - q)};
+    const Vec3 w = p - a;
+    double t = l2 > 0 ? dot(w, ab) / l2 : 0.0;
+    if (t <= 0) return {a, norm2(w)};  // ends exactly, never a rounded a + 1*ab
+    if (t >= 1) return {b, norm2(p - b)};
+    // The distance from differences (w - t ab), not from the rounded world point a + t ab, which
+    // would be off by an ulp of the coordinates (far from the origin, far more than the distance's).
+    return {a + ab * t, norm2(w - ab * t)};
 }
 
 static ClosestPoint min_over_edges(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {

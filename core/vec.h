@@ -64,6 +64,16 @@ struct Box3 {
     double diagonal() const { return empty() ? 0.0 : norm(hi - lo); }
 };
 
+// Squared distance from p to the box [lo, hi] (0 inside).
+inline double point_box_distance2(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+    double d2 = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double g = std::max({0.0, lo[i] - p[i], p[i] - hi[i]});
+        d2 += g * g;
+    }
+    return d2;
+}
+
 // Squared distance between two axis-aligned boxes (0 when they overlap).
 inline double box_distance2(const Box3& a, const Box3& b) {
     double d2 = 0;

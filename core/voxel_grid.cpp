@@ -162,14 +162,6 @@ std::vector<size_t> MeshGrid::voxels_of_triangle(const std::array<Vec3, 3>& corn
     return r;
 }
 
-static double point_box_distance2(const Vec3& p, const Vec3& lo, const Vec3& hi) {
-    double d2 = 0;
-    for (int i = 0; i < 3; ++i) {
-        double g = std::max({0.0, lo[i] - p[i], p[i] - hi[i]});
-        d2 += g * g;
-    }
-    return d2;
-}
 
 MeshGrid::Nearest MeshGrid::nearest(const Vec3& p, uint32_t hint) const {
     const TriangleMesh& M = *mesh_;

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "cascade.h"
 #include "degenerate_pairs.h"
 #include "hausdorff.h"
 #include "label_check.h"
@@ -138,4 +139,127 @@ TEST(Degenerate, PaperEqualsFastAndTheResultHoldsItsLowerBounds) {
             EXPECT_LE(p.distance, p.upper) << what;
         }
     }
+}
+
+// ---------------------------------------------------------------- the certified interval
+
+namespace {
+
+// The oracle of the interval test: distances in long double (64-bit mantissa) from points formed
+// in long double, so that its own rounding (~1e-19 of the coordinates) is far below the 1e-9 of
+// the diagonal the interval is held to, even 1e7 diagonals from the origin.
+struct L3 {
+    long double x, y, z;
+    L3 operator-(const L3& o) const { return {x - o.x, y - o.y, z - o.z}; }
+    L3 operator+(const L3& o) const { return {x + o.x, y + o.y, z + o.z}; }
+    L3 operator*(long double s) const { return {x * s, y * s, z * s}; }
+};
+L3 ld(const Vec3& p) { return {p.x, p.y, p.z}; }
+long double dotl(const L3& a, const L3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+L3 crossl(const L3& a, const L3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+
+long double segment_d2(const L3& p, const L3& a, const L3& b) {
+    const L3 ab = b - a, w = p - a;
+    const long double l2 = dotl(ab, ab);
+    const long double t = l2 > 0 ? std::min(1.0L, std::max(0.0L, dotl(w, ab) / l2)) : 0.0L;
+    const L3 d = w - ab * t;
+    return dotl(d, d);
+}
+
+// Squared distance from p to the closed triangle abc: the plane where p projects inside, else the
+// nearest of the three edges (zero-area triangles are their edges).
+long double triangle_d2(const L3& p, const L3& a, const L3& b, const L3& c) {
+    long double best = std::min({segment_d2(p, a, b), segment_d2(p, b, c), segment_d2(p, c, a)});
+    const L3 n = crossl(b - a, c - a);
+    const long double nn = dotl(n, n);
+    if (nn > 0) {
+        const L3 w = p - a;
+        const long double h = dotl(w, n);
+        const L3 q = w - n * (h / nn);  // p's projection, relative to a
+        const bool inside = dotl(crossl(b - a, q), n) >= 0 && dotl(crossl(c - b, q - (b - a)), n) >= 0 &&
+                            dotl(crossl(a - c, q - (c - a)), n) >= 0;
+        if (inside) best = std::min(best, h * h / nn);
+    }
+    return best;
+}
+
+long double distance_ld(const L3& p, const TriangleMesh& B) {
+    long double best = HUGE_VALL;
+    for (size_t t = 0; t < B.num_triangles(); ++t) {
+        const auto c = B.corners(t);
+        best = std::min(best, triangle_d2(p, ld(c[0]), ld(c[1]), ld(c[2])));
+    }
+    return std::sqrt(best);
+}
+
+// The closest point of the closed triangle abc to p (the plane, else the nearest edge).
+L3 closest_on_triangle(const L3& p, const L3& a, const L3& b, const L3& c) {
+    auto on_segment = [&](const L3& u, const L3& v) {
+        const L3 uv = v - u;
+        const long double l2 = dotl(uv, uv);
+        const long double t = l2 > 0 ? std::min(1.0L, std::max(0.0L, dotl(p - u, uv) / l2)) : 0.0L;
+        return u + uv * t;
+    };
+    L3 best = on_segment(a, b);
+    for (const L3& q : {on_segment(b, c), on_segment(c, a)})
+        if (dotl(p - q, p - q) < dotl(p - best, p - best)) best = q;
+    const L3 n = crossl(b - a, c - a);
+    const long double nn = dotl(n, n);
+    if (nn > 0) {
+        const L3 q = (p - a) - n * (dotl(p - a, n) / nn);
+        const bool inside = dotl(crossl(b - a, q), n) >= 0 && dotl(crossl(c - b, q - (b - a)), n) >= 0 &&
+                            dotl(crossl(a - c, q - (c - a)), n) >= 0;
+        if (inside) best = a + q;
+    }
+    return best;
+}
+
+}  // namespace
+
+// The certified interval holds the truth on every degenerate pair, by an oracle in extended
+// precision: upper is at least every vertex's and every sample's distance, and lower at most the
+// witness's distance (put back on its target triangle). Near the origin or 1e7 diagonals away
+// alike.
+TEST(Degenerate, CertifiedIntervalHoldsTheTruthInExtendedPrecision) {
+    int narrow = 0, wide = 0;
+    double widest = 0;
+    for (int seed = 0; seed < pair_count(); ++seed) {
+        const DegeneratePair P = degenerate_pair((unsigned)seed);
+        const HausdorffResult r = hausdorff(P.a, P.b, HausdorffOptions{});
+        Box3 box = P.a.bounds();
+        box.add(P.b.bounds());
+        const double diag = box.diagonal();
+        const double coord = coordinate_magnitude(P.a, P.b);
+        const long double tol = 4 * 0x1p-64L * coord + 1e-15L * diag;  // the oracle's own rounding
+        for (int dir = 0; dir < 2; ++dir) {
+            const OneSidedResult& s = dir ? r.b_to_a : r.a_to_b;
+            const TriangleMesh &A = dir ? P.b : P.a, &B = dir ? P.a : P.b;
+            const std::string what = "seed " + std::to_string(seed) + " (" + P.kind + ") direction " + std::to_string(dir);
+            long double far = 0;
+            const int n = 8;
+            for (size_t t = 0; t < A.num_triangles(); ++t) {
+                const auto c = A.corners(t);
+                for (int i = 0; i <= n; ++i)
+                    for (int j = 0; i + j <= n; ++j) {
+                        const long double u = (long double)i / n, v = (long double)j / n;
+                        far = std::max(far, distance_ld(ld(c[0]) + (ld(c[1]) - ld(c[0])) * u + (ld(c[2]) - ld(c[0])) * v, B));
+                    }
+            }
+            EXPECT_GE((long double)s.upper + tol, far) << what << ": upper " << s.upper << " below a sample at " << (double)far;
+            // lower: the witness, put back on its target (from_point is rounded to the coordinates),
+            // is at least that far from B, less the rounding of from_point (4 ulps of the
+            // coordinates: the check is that much weaker than the interval's own claim).
+            const auto wc = A.corners(s.target);
+            const L3 x = closest_on_triangle(ld(s.from_point), ld(wc[0]), ld(wc[1]), ld(wc[2]));
+            EXPECT_LE((long double)s.lower, distance_ld(x, B) + tol + 4 * 0x1p-52L * coord)
+                << what << ": lower " << s.lower << " above the witness's distance " << (double)distance_ld(x, B);
+            EXPECT_LE(s.lower, s.distance) << what;
+            EXPECT_LE(s.distance, s.upper) << what;
+            const double width = (s.upper - s.lower) / diag;
+            widest = std::max(widest, width);
+            (width <= 1e-9 ? narrow : wide)++;
+        }
+    }
+    // (Not yet asserted, issue 8: the upper end's allowance is 1e-13 of the coordinates' magnitude.)
+    std::printf("[ info ] %d intervals within 1e-9 of the diagonal, %d wider (the widest %.3g of it)\n", narrow, wide, widest);
 }
