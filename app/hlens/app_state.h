@@ -1,6 +1,6 @@
-// What the panels show and edit. The main loop owns one AppState; panels read it and set
-// `Requests` for the loop to act on (start/cancel jobs, reset the camera, save a PNG), so panels
-// need no access to OpenGL or to the job threads.
+// What the panels show and edit: the application state, in one place. The main loop owns one
+// AppState; panels read it and set `Requests` for the loop to act on (requests.h: start/cancel
+// jobs, reset the camera, save a PNG), so panels need no access to OpenGL or to the job threads.
 #pragma once
 #include <array>
 #include <memory>
@@ -132,6 +132,7 @@ struct AppState {
     std::string demo_path[2];     // the built-in demo pair
     std::string edit_path[2];     // the file panel's text fields
     std::vector<std::string> recent;    // recently opened files, newest first (not kept in headless runs)
+    std::string recent_file;            // where `recent` is kept ("" in headless runs; settings.h)
     std::vector<std::string> dropped;   // files dropped on the window, waiting for "which side?"
 
     // Built-in cases (cases.h) and "Export case".
@@ -177,5 +178,10 @@ struct AppState {
     } tiles;
     Requests req;
 };
+
+// The state at start-up from the command line (a built-in case loaded, --direction, --stats, the
+// views --step opens, ...). False: an unknown --case (reported on stderr).
+struct Options;   // args.h
+bool init_state(AppState& s, const Options& opt);
 
 }  // namespace hlens::gui

@@ -2,6 +2,7 @@
 
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <initializer_list>
 
@@ -105,6 +106,8 @@ int parse_choice(const std::string& v, std::initializer_list<const char*> choice
 
 }  // namespace
 
+// Long: one branch per option, then the checks across options. A flat list reads like the usage;
+// split, each piece would hold a handful of unrelated options.
 Options parse_args(const std::vector<std::string>& args) {
     Options o;
     std::vector<std::string> positional;
@@ -227,6 +230,20 @@ Options parse_args(const std::vector<std::string>& args) {
         throw UsageError("expected two meshes A B (or none for the demo), got " + std::to_string(positional.size()));
     }
     return o;
+}
+
+int read_command_line(int argc, char** argv, Options& opt) {
+    try {
+        opt = parse_args(std::vector<std::string>(argv + 1, argv + argc));
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "hlens: %s\n%s", e.what(), usage_text());
+        return 2;
+    }
+    if (opt.help) {
+        std::fputs(usage_text(), stdout);
+        return 0;
+    }
+    return -1;
 }
 
 }  // namespace hlens::gui

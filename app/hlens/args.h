@@ -56,5 +56,8 @@ struct Options {
 // Throws UsageError with a one-line message.
 Options parse_args(const std::vector<std::string>& args);
 const char* usage_text();
+// main()'s command line into `opt`: -1 to go on, else the exit code (0 after --help, which prints
+// the usage; 2 after a usage error, printed with the usage on stderr).
+int read_command_line(int argc, char** argv, Options& opt);
 
 }  // namespace hlens::gui

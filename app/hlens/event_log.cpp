@@ -2,47 +2,26 @@
 // by kind. The whole stream comes from the target's trace (TraceJob records it); a click on a line
 // jumps the timeline there (Stepper::jump, as "Go to step"), and the current step's line is
 // highlighted and scrolled into view whenever the step changes.
+#include "event_log.h"
+
 #include <algorithm>
 #include <cstdio>
 
 #include <imgui.h>
 
 #include "app_state.h"
-#include "panels.h"
+#include "event_text.h"
+#include "layout.h"
 #include "stepper.h"
+#include "ui.h"
 
 namespace hlens::gui {
 
 namespace {
 constexpr int kNumKinds = (int)EventKind::TargetFinished + 1;
-float em() { return ImGui::GetFontSize(); }
-}  // namespace
 
-void draw_event_log(AppState& s) {
-    Stepper& st = s.stepper;
-    st.log_shown = st.log_total = 0;
-    if (!st.open || !st.event_log || !st.active()) return;
-    const int d = st.side;
-    const TargetSolver* full = s.trace[d] && s.trace[d]->target == (uint32_t)st.target && s.trace[d]->solver
-                                   ? s.trace[d]->solver.get()
-                                   : nullptr;
-    place_tile(s.tiles.log);
-    bool open = true;
-    if (!ImGui::Begin("Event log", &open, kTileFlags)) {
-        ImGui::End();
-        st.event_log = open;
-        return;
-    }
-    st.event_log = open;
-    if (!s.tiles.graph_on) s.tiles.strip_h = ImGui::GetWindowSize().y;   // the strip's top edge is the log's
-    if (!full) {
-        ImGui::TextDisabled(s.trace_running ? "tracing the target..." : "no event stream");
-        ImGui::End();
-        return;
-    }
-    const std::vector<Event>& ev = full->events();
-
-    // Filter by kind: a combo of checkboxes.
+// Filter by kind: a combo of checkboxes.
+void kind_filter(Stepper& st) {
     int n_on = 0;
     for (int k = 0; k < kNumKinds; ++k) n_on += st.kind_shown[k];
     char preview[48];
@@ -62,6 +41,11 @@ void draw_event_log(AppState& s) {
             if (ImGui::Checkbox(event_name((EventKind)k), &st.kind_shown[k])) st.log_dirty = true;
         ImGui::EndCombo();
     }
+}
+
+// The rows that pass the filter, rebuilt when the filter or the stream changed.
+void refresh_rows(Stepper& st, const TargetSolver* full) {
+    const std::vector<Event>& ev = full->events();
     if (st.log_dirty || st.log_source != (const void*)full || st.log_source_size != ev.size()) {
         st.log_rows.clear();
         for (size_t i = 0; i < ev.size(); ++i)
@@ -73,9 +57,10 @@ void draw_event_log(AppState& s) {
     }
     st.log_shown = (long)st.log_rows.size();
     st.log_total = (long)ev.size();
-    ImGui::SameLine();
-    ImGui::TextDisabled("%ld of %ld", st.log_shown, st.log_total);
+}
 
+// The rows (only those on screen are laid out); the step clicked, else -2.
+long event_rows(Stepper& st, const std::vector<Event>& ev) {
     ImGui::BeginChild("rows", ImVec2(0, 0), true, ImGuiWindowFlags_HorizontalScrollbar);
     const float line_h = ImGui::GetTextLineHeightWithSpacing();
     if (st.log_scrolled_step != st.step) {   // bring the current step's line (or the nearest before it) into view
@@ -105,6 +90,33 @@ void draw_event_log(AppState& s) {
         }
     clipper.End();
     ImGui::EndChild();
+    return jump_to;
+}
+
+}  // namespace
+
+void draw_event_log(AppState& s) {
+    Stepper& st = s.stepper;
+    st.log_shown = st.log_total = 0;
+    if (!st.open || !st.event_log || !st.active()) return;
+    const int d = st.side;
+    const TargetSolver* full = s.trace[d] && s.trace[d]->target == (uint32_t)st.target && s.trace[d]->solver
+                                   ? s.trace[d]->solver.get()
+                                   : nullptr;
+    if (!begin_tile("Event log", s.tiles.log, st.event_log)) return;
+    if (!s.tiles.graph_on) s.tiles.strip_h = ImGui::GetWindowSize().y;   // the strip's top edge is the log's
+    if (!full) {
+        ImGui::TextDisabled(s.trace_running ? "tracing the target..." : "no event stream");
+        ImGui::End();
+        return;
+    }
+    const std::vector<Event>& ev = full->events();
+
+    kind_filter(st);
+    refresh_rows(st, full);
+    ImGui::SameLine();
+    ImGui::TextDisabled("%ld of %ld", st.log_shown, st.log_total);
+    const long jump_to = event_rows(st, ev);
     ImGui::End();
     if (jump_to != -2) st.jump(jump_to);   // the "Go to step" path
 }

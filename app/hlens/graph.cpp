@@ -11,7 +11,7 @@
 #include <imgui.h>
 
 #include "app_state.h"
-#include "panels.h"
+#include "layout.h"
 #include "gl.h"
 #include "shader.h"
 
@@ -87,7 +87,8 @@ void ensure_target(int w, int h) {
 }
 
 // The surface and the lines of the current state, normalised: (x, y) centred on T' and divided by
-// its extent, z = d^2 / (max d^2) * 0.6.
+// its extent, z = d^2 / (max d^2) * 0.6. Long: the surface and its lines share the lattice, its
+// heights and the normalisation (`vert`); apart, they would pass all of these around.
 void build(Stepper& st) {
     const TargetSolver& ts = *st.solver;
     const TargetFrame& fr = ts.frame();
@@ -237,14 +238,7 @@ void draw_graph_view(AppState& s) {
     Stepper& st = s.stepper;
     if (!st.open || !st.graph_open || !st.active()) return;
     const float em = ImGui::GetFontSize();
-    place_tile(s.tiles.graph);
-    bool open = true;
-    if (!ImGui::Begin("Graph of d^2", &open, kTileFlags | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) {
-        ImGui::End();
-        st.graph_open = open;
-        return;
-    }
-    st.graph_open = open;
+    if (!begin_tile("Graph of d^2", s.tiles.graph, st.graph_open, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse)) return;
     s.tiles.strip_h = ImGui::GetWindowSize().y;                          // the strip's top edge
     if (s.tiles.log_on) s.tiles.graph_w = ImGui::GetWindowSize().x;      // and the edge it shares with the log
     if (!init_gl()) {

@@ -9,12 +9,13 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "ui.h"
+
 namespace hlens::gui {
 
 namespace {
 
 const char* kDir[2] = {"h(A,B): A measured against B", "h(B,A): B measured against A"};
-float em() { return ImGui::GetFontSize(); }
 
 void value_row(const char* label, double v, const char* tooltip) {
     ImGui::TableNextRow();

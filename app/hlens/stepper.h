@@ -1,5 +1,6 @@
-// Stepping through one target's construction: a TargetSolver recording its events, driven from
-// the timeline panel, and the drawing data of its domain mesh for the 2D domain view.
+// Stepping through one target's construction (the stepping model, no drawing): a TargetSolver
+// recording its events, driven from the timeline panel, and the drawing data of its domain mesh
+// for the 2D domain view.
 //
 // The solver runs on the UI thread: one event (or one insertion) per request is cheap, and
 // stepping back replays from the start (the construction is deterministic). After every change
@@ -170,12 +171,7 @@ unsigned domain_label_colour(const DomainLabel& l, bool infinite);
 struct AppState;
 void sync_stepper(AppState& s);
 
-// The timeline panel and the 2D domain view (only while s.stepper.open and a target is selected).
-void draw_timeline(AppState& s);
-void draw_domain_view(AppState& s);
-// The event log of the selected target (only with the timeline and s.stepper.event_log).
-void draw_event_log(AppState& s);
-// One line with the event's main fields.
-std::string event_summary(const Event& e);
+// Its views: the timeline (timeline.h), the domain view (domain_view.h), the graph of d^2
+// (graph.h), the event log (event_log.h); its events as text: event_text.h.
 
 }  // namespace hlens::gui
