@@ -16,11 +16,11 @@
 #include <thread>
 #include <vector>
 
-#include "hausdorff.h"
-#include "mesh.h"
-#include "mesh_io.h"
-#include "surface_stats.h"
-#include "voxel_grid.h"
+#include <hlens/hausdorff.h>
+#include <hlens/mesh.h>
+#include <hlens/mesh_io.h>
+#include <hlens/surface_stats.h>
+#include <hlens/voxel_grid.h>
 
 namespace hlens {
 

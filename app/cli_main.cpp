@@ -29,17 +29,18 @@
 #include <utility>
 #include <vector>
 
+#include <hlens/bounds.h>
+#include <hlens/hausdorff.h>
+#include <hlens/mesh.h>
+#include <hlens/mesh_io.h>
+#include <hlens/parallel.h>
+#include <hlens/surface_stats.h>
+#include <hlens/target_solver.h>
+#include <hlens/voxel_grid.h>
+
 #include "batch.h"
-#include "bounds.h"
-#include "hausdorff.h"
 #include "json_value.h"
-#include "mesh.h"
-#include "mesh_io.h"
-#include "parallel.h"
 #include "report.h"
-#include "surface_stats.h"
-#include "target_solver.h"
-#include "voxel_grid.h"
 
 using namespace hlens;
 

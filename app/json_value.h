@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "vec.h"
+#include <hlens/vec.h>
 
 namespace hlens {
 

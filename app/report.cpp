@@ -7,10 +7,10 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "conic.h"
-#include "domain_mesh.h"
-#include "regions.h"
-#include "voxel_grid.h"
+#include <hlens/conic.h>
+#include <hlens/domain_mesh.h>
+#include <hlens/regions.h>
+#include <hlens/voxel_grid.h>
 
 namespace hlens {
 

@@ -8,12 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "bounds.h"
-#include "hausdorff.h"
+#include <hlens/bounds.h>
+#include <hlens/hausdorff.h>
+#include <hlens/mesh.h>
+#include <hlens/surface_stats.h>
+#include <hlens/target_solver.h>
+
 #include "json_value.h"
-#include "mesh.h"
-#include "surface_stats.h"
-#include "target_solver.h"
 
 namespace hlens {
 

@@ -19,10 +19,10 @@
 #include <memory>
 #include <string>
 
-#include "hausdorff.h"
-#include "mesh_io.h"
-#include "surface_stats.h"
-#include "target_solver.h"
+#include <hlens/hausdorff.h>
+#include <hlens/mesh_io.h>
+#include <hlens/surface_stats.h>
+#include <hlens/target_solver.h>
 
 using namespace hlens;
 

@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "mesh_io.h"
+#include <hlens/mesh_io.h>
 
 namespace hlens_fuzz {
 

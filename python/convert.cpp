@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "mesh_io.h"
+#include <hlens/mesh_io.h>
 
 namespace hlens::py_bindings {
 

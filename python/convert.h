@@ -5,9 +5,10 @@
 
 #include <string>
 
-#include "hausdorff.h"
+#include <hlens/hausdorff.h>
+#include <hlens/mesh.h>
+
 #include "json_value.h"
-#include "mesh.h"
 
 namespace hlens::py_bindings {
 

@@ -9,10 +9,11 @@
 #include <mutex>
 #include <thread>
 
+#include <hlens/mesh_io.h>
+
 #include "batch.h"
 #include "blocking.h"
 #include "convert.h"
-#include "mesh_io.h"
 #include "result.h"
 #include "trace.h"
 

@@ -4,9 +4,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include "hausdorff.h"
+#include <hlens/hausdorff.h>
+#include <hlens/mesh.h>
+
 #include "json_value.h"
-#include "mesh.h"
 #include "report.h"
 
 namespace hlens::py_bindings {

@@ -9,11 +9,12 @@
 #include <thread>
 #include <vector>
 
+#include <hlens/domain_mesh.h>
+#include <hlens/target_solver.h>
+#include <hlens/voxel_grid.h>
+
 #include "convert.h"
-#include "domain_mesh.h"
 #include "report.h"
-#include "target_solver.h"
-#include "voxel_grid.h"
 
 namespace hlens::py_bindings {
 

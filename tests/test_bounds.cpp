@@ -5,10 +5,11 @@
 #include <cstdio>
 #include <random>
 
-#include "bounds.h"
-#include "mesh_io.h"
-#include "point_triangle.h"
-#include "voxel_grid.h"
+#include <hlens/bounds.h>
+#include <hlens/mesh_io.h>
+#include <hlens/point_triangle.h>
+#include <hlens/voxel_grid.h>
+
 #include "test_meshes.h"
 
 using namespace hlens;

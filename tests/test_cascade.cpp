@@ -12,8 +12,9 @@
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
 #pragma GCC diagnostic pop
 
-#include "bounds.h"
-#include "hausdorff.h"
+#include <hlens/bounds.h>
+#include <hlens/hausdorff.h>
+
 #include "test_meshes.h"
 
 using namespace hlens;

@@ -12,13 +12,14 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "cascade.h"
+#include <hlens/cascade.h>
+#include <hlens/hausdorff.h>
+#include <hlens/label_check.h>
+#include <hlens/point_triangle.h>
+#include <hlens/target_solver.h>
+#include <hlens/voxel_grid.h>
+
 #include "degenerate_pairs.h"
-#include "hausdorff.h"
-#include "label_check.h"
-#include "point_triangle.h"
-#include "target_solver.h"
-#include "voxel_grid.h"
 
 using namespace hlens;
 using namespace hlens_test;

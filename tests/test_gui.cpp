@@ -11,11 +11,11 @@
 
 #include "test_support.h"
 #include "test_meshes.h"
-#include "integrals.h"
-#include "target_maxima.h"
-#include "mesh_io.h"
-#include "target_solver.h"
-#include "voxel_grid.h"
+#include <hlens/integrals.h>
+#include <hlens/target_maxima.h>
+#include <hlens/mesh_io.h>
+#include <hlens/target_solver.h>
+#include <hlens/voxel_grid.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -1187,7 +1187,7 @@ TEST(Gui, OpeningTheTimelineFramesTheTarget) {
 // every triangle fast mode skipped is filled in the background; until then a triangle is drawn
 // "not yet exact" (two greys in diagonal stripes), never coloured by its upper bound.
 #ifdef HLENS_GUI
-#include "target_maxima.h"
+#include <hlens/target_maxima.h>
 
 namespace {
 

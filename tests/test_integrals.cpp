@@ -11,11 +11,12 @@
 #include <random>
 #include <vector>
 
-#include "domain_mesh.h"
-#include "integrals.h"
-#include "mesh_io.h"
-#include "point_triangle.h"
-#include "surface_stats.h"
+#include <hlens/domain_mesh.h>
+#include <hlens/integrals.h>
+#include <hlens/mesh_io.h>
+#include <hlens/point_triangle.h>
+#include <hlens/surface_stats.h>
+
 #include "test_meshes.h"
 
 using namespace hlens;

@@ -1,6 +1,6 @@
 // Tests for core/mesh_io: small files written here with exact expected contents, the shared real
 // meshes (counts from /work/shared/meshes/README.md), error messages, and truncation/corruption fuzzing.
-#include "mesh_io.h"
+#include <hlens/mesh_io.h>
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "mesh_io.h"
-#include "point_triangle.h"
+#include <hlens/mesh_io.h>
+#include <hlens/point_triangle.h>
 
 namespace hlens_test {
 

@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "conic.h"
-#include "poly.h"
+#include <hlens/conic.h>
+#include <hlens/poly.h>
 
 using namespace hlens;
 

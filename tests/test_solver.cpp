@@ -7,11 +7,12 @@
 #include <cmath>
 #include <random>
 
-#include "bounds.h"
-#include "case_export.h"
-#include "hausdorff.h"
-#include "mesh_io.h"
-#include "target_solver.h"
+#include <hlens/bounds.h>
+#include <hlens/case_export.h>
+#include <hlens/hausdorff.h>
+#include <hlens/mesh_io.h>
+#include <hlens/target_solver.h>
+
 #include "test_meshes.h"
 
 using namespace hlens;

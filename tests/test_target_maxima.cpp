@@ -13,10 +13,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "bounds.h"
-#include "hausdorff.h"
-#include "target_maxima.h"
-#include "target_solver.h"
+#include <hlens/bounds.h>
+#include <hlens/hausdorff.h>
+#include <hlens/target_maxima.h>
+#include <hlens/target_solver.h>
+
 #include "test_meshes.h"
 
 using namespace hlens;

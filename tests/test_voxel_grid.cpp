@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <random>
 
-#include "mesh_io.h"
-#include "point_triangle.h"
-#include "voxel_grid.h"
+#include <hlens/mesh_io.h>
+#include <hlens/point_triangle.h>
+#include <hlens/voxel_grid.h>
 
 using namespace hlens;
 
