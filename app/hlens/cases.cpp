@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "mesh_io.h"
+#include <hlens/mesh_io.h>
 
 namespace hlens::gui {
 

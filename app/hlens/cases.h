@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh.h"
+#include <hlens/mesh.h>
 
 namespace hlens::gui {
 

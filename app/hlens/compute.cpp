@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "mesh_io.h"
+#include <hlens/mesh_io.h>
 
 namespace hlens::gui {
 

@@ -16,12 +16,12 @@
 #include <thread>
 #include <vector>
 
-#include "hausdorff.h"
-#include "mesh.h"
-#include "surface_stats.h"
-#include "target_maxima.h"
-#include "target_solver.h"
-#include "voxel_grid.h"
+#include <hlens/hausdorff.h>
+#include <hlens/mesh.h>
+#include <hlens/surface_stats.h>
+#include <hlens/target_maxima.h>
+#include <hlens/target_solver.h>
+#include <hlens/voxel_grid.h>
 
 namespace hlens::gui {
 

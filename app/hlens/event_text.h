@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "target_solver.h"
+#include <hlens/target_solver.h>
 
 namespace hlens::gui {
 

@@ -6,7 +6,7 @@
 #include "exact_map.h"
 #include "settings.h"
 #include "stepper.h"
-#include "target_maxima.h"
+#include <hlens/target_maxima.h>
 
 namespace hlens::gui {
 

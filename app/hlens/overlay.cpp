@@ -8,7 +8,7 @@
 #include <imgui.h>
 
 #include "gl.h"
-#include "label_check.h"
+#include <hlens/label_check.h>
 #include "shader.h"
 #include "stepper.h"
 

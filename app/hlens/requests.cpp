@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "case_export.h"
+#include <hlens/case_export.h>
 #include "cases.h"
 #include "exact_map.h"
 #include "stats_flow.h"

@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "gl.h"
-#include "mesh.h"
+#include <hlens/mesh.h>
 
 namespace hlens::gui {
 

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "compute.h"
-#include "target_solver.h"
+#include <hlens/target_solver.h>
 
 namespace hlens::gui {
 

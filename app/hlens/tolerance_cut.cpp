@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "integrals.h"
+#include <hlens/integrals.h>
 #include "stepper.h"
 
 namespace hlens::gui {

@@ -5,8 +5,8 @@
 #pragma once
 #include <vector>
 
-#include "domain_mesh.h"
-#include "regions.h"
+#include <hlens/domain_mesh.h>
+#include <hlens/regions.h>
 
 namespace hlens::gui {
 
