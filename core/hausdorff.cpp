@@ -129,7 +129,8 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
         Vec3 to_point;
         const double d_witness = witness_distance(grid.of(1 - side), frame.origin, offset, to_point);
         r.to_point = to_point;
-        r.lower = std::max(0.0, std::min(r.distance, d_witness - 16 * 0x1p-52 * (box.diagonal() + d_witness)));
+        // (A sliver target's witness may lie off the sliver by up to its height, its slack.)
+        r.lower = std::max(0.0, std::min(r.distance, d_witness - tab.slack[r.target] - 16 * 0x1p-52 * (box.diagonal() + d_witness)));
         // upper: the domain meshes' maximum, widened by a bound on the rounding of coordinates.
         double coord = coordinate_magnitude(A, B);
         r.upper = std::max(r.distance, tab.piece_upper);

@@ -168,12 +168,15 @@ long double segment_d2(const L3& p, const L3& a, const L3& b) {
 }
 
 // Squared distance from p to the closed triangle abc: the plane where p projects inside, else the
-// nearest of the three edges (zero-area triangles are their edges).
+// nearest of the three edges. A triangle whose height is below 1e-12 of its longest edge is its
+// edges (off by that height at most): its normal, a small cross product of long edges, would be
+// off in direction even in long double.
 long double triangle_d2(const L3& p, const L3& a, const L3& b, const L3& c) {
     long double best = std::min({segment_d2(p, a, b), segment_d2(p, b, c), segment_d2(p, c, a)});
     const L3 n = crossl(b - a, c - a);
     const long double nn = dotl(n, n);
-    if (nn > 0) {
+    const long double l2 = std::max({dotl(b - a, b - a), dotl(c - b, c - b), dotl(a - c, a - c)});
+    if (nn > 1e-24L * l2 * l2) {
         const L3 w = p - a;
         const long double h = dotl(w, n);
         const L3 q = w - n * (h / nn);  // p's projection, relative to a
@@ -206,7 +209,8 @@ L3 closest_on_triangle(const L3& p, const L3& a, const L3& b, const L3& c) {
         if (dotl(p - q, p - q) < dotl(p - best, p - best)) best = q;
     const L3 n = crossl(b - a, c - a);
     const long double nn = dotl(n, n);
-    if (nn > 0) {
+    const long double l2 = std::max({dotl(b - a, b - a), dotl(c - b, c - b), dotl(a - c, a - c)});
+    if (nn > 1e-24L * l2 * l2) {  // as triangle_d2
         const L3 q = (p - a) - n * (dotl(p - a, n) / nn);
         const bool inside = dotl(crossl(b - a, q), n) >= 0 && dotl(crossl(c - b, q - (b - a)), n) >= 0 &&
                             dotl(crossl(a - c, q - (c - a)), n) >= 0;
@@ -231,7 +235,8 @@ TEST(Degenerate, CertifiedIntervalHoldsTheTruthInExtendedPrecision) {
         box.add(P.b.bounds());
         const double diag = box.diagonal();
         const double coord = coordinate_magnitude(P.a, P.b);
-        const long double tol = 4 * 0x1p-64L * coord + 1e-15L * diag;  // the oracle's own rounding
+        // The oracle's own rounding, and its slivers taken as their edges (1e-12 of an edge).
+        const long double tol = 4 * 0x1p-64L * coord + 1e-12L * diag;
         for (int dir = 0; dir < 2; ++dir) {
             const OneSidedResult& s = dir ? r.b_to_a : r.a_to_b;
             const TriangleMesh &A = dir ? P.b : P.a, &B = dir ? P.a : P.b;
