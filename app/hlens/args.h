@@ -32,11 +32,11 @@ struct Options {
     std::string screenshot;      // --screenshot PATH: headless run, write a PNG and exit
     std::vector<InputAction> input;   // --click, --double-click, --drag, --key (in the given order)
     long step = -1;              // --step N|end: open the timeline at event N (LONG_MAX: end; -1: not given)
-    bool event_log = false;
+    bool event_log = false;      // --event-log: open the event log with the timeline
     std::string case_name;       // --case NAME: a built-in case instead of files
     double epsilon = 0;          // --epsilon E: its near-degeneracy
     bool epsilon_given = false;
-    std::string export_dir;      // --export-case DIR: headless, export the selected target there      // --event-log: open the event log with the timeline
+    std::string export_dir;      // --export-case DIR: headless, export the selected target there
     bool overlay = false;        // --overlay: with --step, the nearest-feature overlay in the domain view
     bool graph = false;          // --graph: with --step, open the graph of d^2
     std::string layout_file;     // --layout-file PATH: keep the window layout there (also headless)

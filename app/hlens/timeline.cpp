@@ -52,6 +52,7 @@ void toolbar(Stepper& st) {
     if (go) st.jump(std::max(-1, st.jump_input));
     same_line_if_fits(checkbox_width("regions"));
     ImGui::Checkbox("regions", &st.show_regions);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("outline the seven regions of the source being inserted");
     same_line_if_fits(checkbox_width("voxels & radius"));
     ImGui::Checkbox("voxels & radius", &st.show_voxels);
     if (ImGui::IsItemHovered())
@@ -60,7 +61,6 @@ void toolbar(Stepper& st) {
                           "radius r + (farthest corner from the centroid), enclosing every point\n"
                           "within r of T' (%ld visited, %ld pending, %ld culled)",
                           st.vox_visited, st.vox_pending, st.vox_culled);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("outline the seven regions of the source being inserted");
     same_line_if_fits(checkbox_width("event log"));
     ImGui::Checkbox("event log", &st.event_log);
     same_line_if_fits(checkbox_width("graph"));
