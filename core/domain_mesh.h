@@ -8,6 +8,9 @@
 //
 // Faces may have holes (a closed ellipse inside a domain). The plane is the target's own frame
 // (see regions.h): T' has unit size, so every tolerance here is relative.
+//
+// The structure and its queries are in domain_mesh.cpp, the insertion of a source (with the
+// merging) in domain_insert.cpp, the clipping primitive (split_face) in domain_split.cpp.
 #pragma once
 #include <algorithm>
 #include <cmath>
