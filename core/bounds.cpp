@@ -69,6 +69,8 @@ static double corner_bound(const Vec3 (&v)[3], const TriangleMesh& B, uint32_t T
     return std::sqrt(m);
 }
 
+// Kept whole (~80 lines): the corner pass (per-triangle bounds and their order) and the
+// subdivision share the running lower bound, its witness and the rounding slack.
 LipschitzBound lipschitz_bounds(const TriangleMesh& A, const VoxelGrid& grid, int sideA, double abs_tol) {
     const int sideB = 1 - sideA;
     const TriangleMesh& B = grid.mesh(sideB);

@@ -179,83 +179,63 @@ ConicDecomposition decompose_conic(const Quadratic2& q) {
     return out;
 }
 
-void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
-    out.type = ConicType::Empty;
-    out.components.clear();
-    double s = q0.scale();
-    if (s == 0 || !std::isfinite(s)) { out.type = ConicType::Everything; return; }
-    Quadratic2 q = q0 * (1.0 / s);
-    // Relative thresholds: the plane is scaled so the target has unit size.
-    const double eps_quad = 1e-12, eps_par = 1e-10, eps_k = 1e-14, eps_lin = 1e-12;
+namespace {
+// Relative thresholds: the plane is scaled so the target has unit size.
+constexpr double eps_quad = 1e-12, eps_par = 1e-10, eps_k = 1e-14, eps_lin = 1e-12;
 
-    // Eigen-decomposition of the quadratic part [[a b][b c]]; none for a linear q (a region
-    // boundary, the most common case), whose eigenvalues are exactly 0.
-    const bool linear = q.is_linear();
-    double theta = linear ? 0.0 : 0.5 * std::atan2(2 * q.b, q.a - q.c);
-    Vec2 e1 = linear ? Vec2{1, 0} : Vec2{std::cos(theta), std::sin(theta)}, e2{-e1.y, e1.x};
-    auto quad = [&](Vec2 e) { return q.a * e.x * e.x + 2 * q.b * e.x * e.y + q.c * e.y * e.y; };
-    double l1 = linear ? 0.0 : quad(e1), l2 = linear ? 0.0 : quad(e2);
-    if (std::fabs(l2) > std::fabs(l1)) { std::swap(l1, l2); std::swap(e1, e2); }
-    Vec2 B{q.d, q.e};
+void add_line(ConicDecomposition& out, Vec2 point, Vec2 dir) {
+    CurveComponent cc;
+    cc.kind = CurveKind::Line;
+    cc.u = dir / norm(dir);
+    cc.c = point - dot(point, cc.u) * cc.u;  // foot of the origin: keeps parameters small
+    out.components.push_back(cc);
+}
 
-    auto add_line = [&](Vec2 point, Vec2 dir) {
+// Central conic (both eigenvalues l1, l2 of the quadratic part away from 0, eigenvectors e1, e2;
+// b1, b2: the linear part along them): l1 X'^2 + l2 Y'^2 + k = 0 around the centre m.
+void decompose_central(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec2 e2, double b1, double b2,
+                       ConicDecomposition& out) {
+    double X0 = -b1 / l1, Y0 = -b2 / l2;
+    double k = q.f - b1 * b1 / l1 - b2 * b2 / l2;
+    Vec2 m = X0 * e1 + Y0 * e2;
+    if ((l1 > 0) == (l2 > 0)) {
+        if (std::fabs(k) <= eps_k) { out.type = ConicType::Point; return; }
+        if ((k > 0) == (l1 > 0)) { out.type = ConicType::Empty; return; }
         CurveComponent cc;
-        cc.kind = CurveKind::Line;
-        cc.u = dir / norm(dir);
-        cc.c = point - dot(point, cc.u) * cc.u;  // foot of the origin: keeps parameters small
+        cc.kind = CurveKind::Ellipse;
+        cc.c = m;
+        cc.u = std::sqrt(-k / l1) * e1;
+        cc.v = std::sqrt(-k / l2) * e2;
         out.components.push_back(cc);
-    };
+        out.type = ConicType::Ellipse;
+        return;
+    }
+    if (std::fabs(k) <= eps_k) {
+        double r = std::sqrt(-l1 / l2);
+        add_line(out, m, e1 + r * e2);
+        add_line(out, m, e1 - r * e2);
+        out.type = ConicType::LinePair;
+        return;
+    }
+    // Hyperbola: branches open along the axis whose eigenvalue has the sign opposite to k.
+    Vec2 ea = e1, eb = e2;
+    double la = l1, lb = l2;
+    if ((k > 0) == (l1 > 0)) { std::swap(ea, eb); std::swap(la, lb); }
+    double A = std::sqrt(-k / la), Bv = std::sqrt(k / lb);
+    for (int sgn : {1, -1}) {
+        CurveComponent cc;
+        cc.kind = CurveKind::Hyperbola;
+        cc.c = m;
+        cc.u = (sgn * A) * ea;
+        cc.v = Bv * eb;
+        out.components.push_back(cc);
+    }
+    out.type = ConicType::Hyperbola;
+}
 
-    if (std::fabs(l1) <= eps_quad) {  // linear: 2 B.x + f = 0
-        double nb = norm(B);
-        if (nb <= eps_lin) { out.type = std::fabs(q.f) <= eps_lin ? ConicType::Everything : ConicType::Empty; return; }
-        Vec2 n = B / nb;
-        add_line(n * (-q.f / (2 * nb)), perp(n));
-        out.type = ConicType::Line;
-        return;
-    }
-    double b1 = dot(B, e1), b2 = dot(B, e2);
-    if (std::fabs(l2) > eps_par * std::fabs(l1)) {
-        // Central conic: l1 X'^2 + l2 Y'^2 + k = 0 around the centre m.
-        double X0 = -b1 / l1, Y0 = -b2 / l2;
-        double k = q.f - b1 * b1 / l1 - b2 * b2 / l2;
-        Vec2 m = X0 * e1 + Y0 * e2;
-        if ((l1 > 0) == (l2 > 0)) {
-            if (std::fabs(k) <= eps_k) { out.type = ConicType::Point; return; }
-            if ((k > 0) == (l1 > 0)) { out.type = ConicType::Empty; return; }
-            CurveComponent cc;
-            cc.kind = CurveKind::Ellipse;
-            cc.c = m;
-            cc.u = std::sqrt(-k / l1) * e1;
-            cc.v = std::sqrt(-k / l2) * e2;
-            out.components.push_back(cc);
-            out.type = ConicType::Ellipse;
-            return;
-        }
-        if (std::fabs(k) <= eps_k) {
-            double r = std::sqrt(-l1 / l2);
-            add_line(m, e1 + r * e2);
-            add_line(m, e1 - r * e2);
-            out.type = ConicType::LinePair;
-            return;
-        }
-        // Hyperbola: branches open along the axis whose eigenvalue has the sign opposite to k.
-        Vec2 ea = e1, eb = e2;
-        double la = l1, lb = l2;
-        if ((k > 0) == (l1 > 0)) { std::swap(ea, eb); std::swap(la, lb); }
-        double A = std::sqrt(-k / la), Bv = std::sqrt(k / lb);
-        for (int sgn : {1, -1}) {
-            CurveComponent cc;
-            cc.kind = CurveKind::Hyperbola;
-            cc.c = m;
-            cc.u = (sgn * A) * ea;
-            cc.v = Bv * eb;
-            out.components.push_back(cc);
-        }
-        out.type = ConicType::Hyperbola;
-        return;
-    }
-    // Parabolic: l2 ~ 0, so q = l1 X^2 + 2 b1 X + 2 b2 Y + f.
+// Parabolic: l2 ~ 0, so q = l1 X^2 + 2 b1 X + 2 b2 Y + f: a parabola, or without the Y term two
+// parallel lines, one double line or nothing.
+void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, double b1, double b2, ConicDecomposition& out) {
     if (std::fabs(b2) > eps_par) {
         // Y = -(l1 X^2 + 2 b1 X + f) / (2 b2), parametrised by X = Xa + t. Anchored at the vertex
         // (Xa = -b1 / l1) unless that lies far outside the target (a nearly flat parabola, as the
@@ -301,10 +281,41 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
         return;
     }
     double r = std::sqrt(disc);
-    add_line(((-b1 + r) / l1) * e1, e2);
-    add_line(((-b1 - r) / l1) * e1, e2);
+    add_line(out, ((-b1 + r) / l1) * e1, e2);
+    add_line(out, ((-b1 - r) / l1) * e1, e2);
     out.type = ConicType::ParallelLines;
-    return;
+}
+
+}  // namespace
+
+void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
+    out.type = ConicType::Empty;
+    out.components.clear();
+    double s = q0.scale();
+    if (s == 0 || !std::isfinite(s)) { out.type = ConicType::Everything; return; }
+    Quadratic2 q = q0 * (1.0 / s);
+
+    // Eigen-decomposition of the quadratic part [[a b][b c]]; none for a linear q (a region
+    // boundary, the most common case), whose eigenvalues are exactly 0.
+    const bool linear = q.is_linear();
+    double theta = linear ? 0.0 : 0.5 * std::atan2(2 * q.b, q.a - q.c);
+    Vec2 e1 = linear ? Vec2{1, 0} : Vec2{std::cos(theta), std::sin(theta)}, e2{-e1.y, e1.x};
+    auto quad = [&](Vec2 e) { return q.a * e.x * e.x + 2 * q.b * e.x * e.y + q.c * e.y * e.y; };
+    double l1 = linear ? 0.0 : quad(e1), l2 = linear ? 0.0 : quad(e2);
+    if (std::fabs(l2) > std::fabs(l1)) { std::swap(l1, l2); std::swap(e1, e2); }
+    Vec2 B{q.d, q.e};
+
+    if (std::fabs(l1) <= eps_quad) {  // linear: 2 B.x + f = 0
+        double nb = norm(B);
+        if (nb <= eps_lin) { out.type = std::fabs(q.f) <= eps_lin ? ConicType::Everything : ConicType::Empty; return; }
+        Vec2 n = B / nb;
+        add_line(out, n * (-q.f / (2 * nb)), perp(n));
+        out.type = ConicType::Line;
+        return;
+    }
+    double b1 = dot(B, e1), b2 = dot(B, e2);
+    if (std::fabs(l2) > eps_par * std::fabs(l1)) decompose_central(q, l1, l2, e1, e2, b1, b2, out);
+    else decompose_parabolic(q, l1, e1, e2, b1, b2, out);
 }
 
 }  // namespace hlens

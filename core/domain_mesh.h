@@ -8,6 +8,9 @@
 //
 // Faces may have holes (a closed ellipse inside a domain). The plane is the target's own frame
 // (see regions.h): T' has unit size, so every tolerance here is relative.
+//
+// The structure and its queries are in domain_mesh.cpp, the insertion of a source (with the
+// merging) in domain_insert.cpp, the clipping primitive (split_face) in domain_split.cpp.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -209,10 +212,35 @@ private:
     };
     Scratch tmp_;
 
+    // Crossing points this close along a curve are one point: where several curves meet (the
+    // shadow of a vertex shared by many sources), nearly double roots are only accurate to about
+    // sqrt(epsilon). (The split's other tolerances are in domain_split.cpp.)
+    static constexpr double kCluster = 1e-7;
+
     template <class Fn> void for_each_half_edge(int f, Fn&& fn) const;  // in face_half_edges() order
     void collect_half_edges(int f, std::vector<int>& out) const;
-    void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out);
     bool near_arc(int h, Vec2 p, double tol) const;  // p within tol of half-edge h's arc
+
+    // The clipping primitive (domain_split.cpp): split_face_into runs these steps on one SplitCall.
+    struct SplitCall;
+    void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out);
+    void split_boundary_where_g_changes_sign(SplitCall& s);
+    void split_arc_at_sign_changes(SplitCall& s, int e);
+    void classify_by_side(SplitCall& s);
+    void find_chords(SplitCall& s);
+    void add_line_pair_centre(SplitCall& s);
+    void add_chords_of_component(SplitCall& s, const CurveComponent& comp);
+    void insert_chords(SplitCall& s);
+    void rebuild_split_faces(SplitCall& s, std::vector<SplitPiece>& out);
+    int side_of_piece(SplitCall& s, int face, const std::vector<int>& loop_hes) const;
+
+    // The insertion of a source (domain_insert.cpp): its regions clipped to T' once, then each face.
+    struct RegionBoxes { Box2 box[7]; bool empty[7]; };
+    void clip_regions_to_target(const SourceProjection& src, RegionBoxes& out);
+    void insert_into_face(int F, const SourceProjection& src, const RegionBoxes& boxes, const Listener* L);
+    void cut_by_region(const SourceRegion& reg, const Listener* L);
+    void apply_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
+    void report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve);
 
     int add_vertex(Vec2 p);
     int add_edge(const RationalCurve& c, double z0, double z1, const Quadratic2& eq, ArcKind kind, CurveKind ck);
@@ -231,6 +259,18 @@ private:
     bool polish_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& p) const;
     bool polish_arc_max(const Quadratic2& q, const Quadratic2& g, Vec2& p) const;
 };
+
+template <class Fn>
+void DomainMesh::for_each_half_edge(int f, Fn&& fn) const {
+    for (int start : faces_[f].loops) {
+        int h = start, guard = 0;
+        do {
+            fn(h);
+            h = half_[h].next;
+            if (++guard > 1000000) break;
+        } while (h != start);
+    }
+}
 
 // Largest value of q along the arc curve(z), z in [z0, z1], over interior critical points only.
 // Returns -inf if there are none.

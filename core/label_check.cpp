@@ -70,39 +70,15 @@ bool away_from_changes(const LabelCheck& L, int x, int y, int border) {
     return true;
 }
 
-}  // namespace
-
-LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& fr, const std::vector<std::array<Vec3, 3>>& sources,
-                        const std::vector<uint32_t>& ids, const LabelCheckOptions& opt) {
-    LabelCheck L;
-    std::vector<std::array<Vec3, 3>> src;
-    std::vector<SourceProjection> proj;
-    double delta = 0;
-    for (size_t s = 0; s < sources.size(); ++s) {
-        src.push_back(source_in_frame(fr, sources[s]));  // the sample plane is z = 0
-        proj.push_back(project_source(fr, sources[s], ids[s]));
-        delta = std::max(delta, proj.back().delta);
-    }
+// 1. Both maps: the nearest feature (the first minimum over the sources, `src` in the frame) and
+// the domain's label, as slot * 8 + region; best_d2: the nearest feature's squared distance.
+void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& src, const std::vector<uint32_t>& ids,
+                const LabelCheckOptions& opt, LabelCheck& L, std::vector<double>& best_d2) {
     auto slot_of = [&](int source) {
         for (size_t i = 0; i < ids.size(); ++i)
             if ((int)ids[i] == source) return (int)i;
         return -1;
     };
-
-    Box2 box;
-    for (const Vec2& c : fr.corners) box.add(c);
-    const double bw = std::max(1e-300, box.hi.x - box.lo.x), bh = std::max(1e-300, box.hi.y - box.lo.y);
-    const double px = std::max(bw, bh) / std::max(1, opt.resolution);
-    L.width = std::max(1, (int)std::ceil(bw / px));
-    L.height = std::max(1, (int)std::ceil(bh / px));
-    L.lo = box.lo;
-    L.hi = Vec2(box.lo.x + L.width * px, box.lo.y + L.height * px);
-    const int n = L.width * L.height;
-    L.nearest.assign(n, -1);
-    L.domain.assign(n, -1);
-    std::vector<double> best_d2(n, HUGE_VAL);
-
-    // 1. Both maps: the nearest feature (the first minimum over the sources) and the domain's label.
     for (int y = 0; y < L.height; ++y)
         for (int x = 0; x < L.width; ++x) {
             const int i = y * L.width + x;
@@ -125,9 +101,14 @@ LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& fr, const std
             best_d2[i] = best.d2;
         }
 
-    // 2. Compare away from changes. A different label is a tie where the two features' quadratics
-    // are one polynomial, or where the labelled source's own region test names the labelled region
-    // at a distance equal to the nearest (to 1e-9 relative).
+}
+
+// 2. Compare away from changes. A different label is a tie where the two features' quadratics
+// are one polynomial, or where the labelled source's own region test names the labelled region
+// at a distance equal to the nearest (to 1e-9 relative).
+void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vector<SourceProjection>& proj, double delta,
+                    const std::vector<uint32_t>& ids, const LabelCheckOptions& opt, const std::vector<double>& best_d2,
+                    LabelCheck& L) {
     for (int y = 0; y < L.height; ++y)
         for (int x = 0; x < L.width; ++x) {
             const int i = y * L.width + x;
@@ -158,6 +139,37 @@ LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& fr, const std
                 L.first = buf;
             }
         }
+}
+
+}  // namespace
+
+LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& fr, const std::vector<std::array<Vec3, 3>>& sources,
+                        const std::vector<uint32_t>& ids, const LabelCheckOptions& opt) {
+    LabelCheck L;
+    std::vector<std::array<Vec3, 3>> src;
+    std::vector<SourceProjection> proj;
+    double delta = 0;
+    for (size_t s = 0; s < sources.size(); ++s) {
+        src.push_back(source_in_frame(fr, sources[s]));  // the sample plane is z = 0
+        proj.push_back(project_source(fr, sources[s], ids[s]));
+        delta = std::max(delta, proj.back().delta);
+    }
+
+    Box2 box;
+    for (const Vec2& c : fr.corners) box.add(c);
+    const double bw = std::max(1e-300, box.hi.x - box.lo.x), bh = std::max(1e-300, box.hi.y - box.lo.y);
+    const double px = std::max(bw, bh) / std::max(1, opt.resolution);
+    L.width = std::max(1, (int)std::ceil(bw / px));
+    L.height = std::max(1, (int)std::ceil(bh / px));
+    L.lo = box.lo;
+    L.hi = Vec2(box.lo.x + L.width * px, box.lo.y + L.height * px);
+    const int n = L.width * L.height;
+    L.nearest.assign(n, -1);
+    L.domain.assign(n, -1);
+    std::vector<double> best_d2(n, HUGE_VAL);
+
+    map_labels(mesh, src, ids, opt, L, best_d2);
+    compare_labels(src, proj, delta, ids, opt, best_d2, L);
     return L;
 }
 

@@ -119,6 +119,46 @@ double f64_from_bits(uint64_t w) { double d; std::memcpy(&d, &w, 8); return d; }
 
 // ---------------------------------------------------------------- triangulation
 
+// Ear clipping of the CCW polygon q (corners v) into out. Pass 0 takes a strictly convex corner
+// whose triangle holds no other corner; pass 1 (only if none exists) removes a straight or spike
+// corner as a degenerate triangle. Returns nullptr on success, else the problem.
+const char* clip_ears(const std::vector<Vec2>& q, const std::vector<uint32_t>& v, std::vector<Tri>& out) {
+    const size_t m = q.size();
+    std::vector<size_t> r(m);
+    std::iota(r.begin(), r.end(), 0);
+    auto orient = [&](size_t i, size_t j, size_t l) { return cross(q[j] - q[i], q[l] - q[i]); };
+    while (r.size() > 3) {
+        const size_t cnt = r.size();
+        bool clipped = false;
+        for (int pass = 0; pass < 2 && !clipped; ++pass) {
+            for (size_t j = 0; j < cnt && !clipped; ++j) {
+                size_t i0 = r[(j + cnt - 1) % cnt], i1 = r[j], i2 = r[(j + 1) % cnt];
+                double c = orient(i0, i1, i2);
+                if (pass == 0) {
+                    if (!(c > 0)) continue;
+                    bool blocked = false;
+                    for (size_t t : r) {
+                        if (q[t] == q[i0] || q[t] == q[i1] || q[t] == q[i2]) continue;
+                        if (orient(i0, i1, t) >= 0 && orient(i1, i2, t) >= 0 && orient(i2, i0, t) >= 0) {
+                            blocked = true;
+                            break;
+                        }
+                    }
+                    if (blocked) continue;
+                } else if (c != 0) {
+                    continue;
+                }
+                out.push_back({v[i0], v[i1], v[i2]});
+                r.erase(r.begin() + std::ptrdiff_t(j));
+                clipped = true;
+            }
+        }
+        if (!clipped) return "polygon cannot be triangulated (self-intersecting)";
+    }
+    out.push_back({v[r[0]], v[r[1]], v[r[2]]});
+    return nullptr;
+}
+
 // Triangulates polygon poly[0..n) (indices valid, coordinates finite) into out.
 // Returns nullptr on success, else the problem.
 const char* triangulate(const std::vector<Vec3>& P, const int64_t* poly, size_t n, std::vector<Tri>& out) {
@@ -179,41 +219,7 @@ const char* triangulate(const std::vector<Vec3>& P, const int64_t* poly, size_t 
     }
     if (convex && turn < 3 * 3.14159265358979323846) return fan(), nullptr;
 
-    // Ear clipping. Pass 0 takes a strictly convex corner whose triangle holds no other corner;
-    // pass 1 (only if none exists) removes a straight or spike corner as a degenerate triangle.
-    std::vector<size_t> r(m);
-    std::iota(r.begin(), r.end(), 0);
-    auto orient = [&](size_t i, size_t j, size_t l) { return cross(q[j] - q[i], q[l] - q[i]); };
-    while (r.size() > 3) {
-        const size_t cnt = r.size();
-        bool clipped = false;
-        for (int pass = 0; pass < 2 && !clipped; ++pass) {
-            for (size_t j = 0; j < cnt && !clipped; ++j) {
-                size_t i0 = r[(j + cnt - 1) % cnt], i1 = r[j], i2 = r[(j + 1) % cnt];
-                double c = orient(i0, i1, i2);
-                if (pass == 0) {
-                    if (!(c > 0)) continue;
-                    bool blocked = false;
-                    for (size_t t : r) {
-                        if (q[t] == q[i0] || q[t] == q[i1] || q[t] == q[i2]) continue;
-                        if (orient(i0, i1, t) >= 0 && orient(i1, i2, t) >= 0 && orient(i2, i0, t) >= 0) {
-                            blocked = true;
-                            break;
-                        }
-                    }
-                    if (blocked) continue;
-                } else if (c != 0) {
-                    continue;
-                }
-                out.push_back({v[i0], v[i1], v[i2]});
-                r.erase(r.begin() + std::ptrdiff_t(j));
-                clipped = true;
-            }
-        }
-        if (!clipped) return "polygon cannot be triangulated (self-intersecting)";
-    }
-    out.push_back({v[r[0]], v[r[1]], v[r[2]]});
-    return nullptr;
+    return clip_ears(q, v, out);
 }
 
 // ---------------------------------------------------------------- common back end
@@ -364,13 +370,13 @@ double ply_bin(const unsigned char* p, int t, bool big) {
 struct PlyProp { std::string name; int type = 0; bool list = false; int count_type = 0; };
 struct PlyElem { std::string name; uint64_t count = 0; std::vector<PlyProp> props; };
 
-TriangleMesh read_ply(const std::string& path, const std::string& data, const LoadOptions& opt) {
-    Lines L{data.data(), data.data() + data.size()};
+// The PLY header: its elements with their properties, and the format (0 ascii, 1 binary little
+// endian, 2 binary big endian). Leaves L at the first line of the data.
+int read_ply_header(const std::string& path, Lines& L, std::vector<PlyElem>& elems) {
     const char *b, *e;
     sv t;
     if (!L.next(b, e) || !Tokens{b, e}.next(t) || t != "ply") fail(path, "not a PLY file (no 'ply' magic)");
     int format = -1;  // 0 ascii, 1 binary little endian, 2 binary big endian
-    std::vector<PlyElem> elems;
     bool header_done = false;
     while (!header_done && L.next(b, e)) {
         Tokens T{b, e};
@@ -403,6 +409,31 @@ TriangleMesh read_ply(const std::string& path, const std::string& data, const Lo
     }
     if (!header_done) fail(path, "truncated PLY header (no end_header)");
     if (format < 0) fail(path, "PLY header has no format line");
+    return format;
+}
+
+// Rejects a binary element that cannot fit in the `left` bytes that follow, and reserves room for
+// its items in `s` (no more than the bytes left can hold, whatever the header claims).
+void reserve_ply_element(const std::string& path, const PlyElem& E, bool ascii, size_t left, bool is_vertex,
+                         bool is_face, Polys& s) {
+    size_t min_size = 0;  // bytes per element, at least
+    for (const PlyProp& pr : E.props) min_size += ascii ? 2 : size_t(kPlySize[pr.list ? pr.count_type : pr.type]);
+    if (!ascii && E.count > left / min_size)
+        fail(path, fmt("truncated: PLY header declares %llu '%s' elements (at least %llu bytes) but only %zu "
+                       "bytes follow", (unsigned long long)E.count, E.name.c_str(),
+                       (unsigned long long)(E.count * min_size), left));
+    const size_t n_reserve = size_t(std::min<uint64_t>(E.count, left / min_size + 1));
+    if (is_vertex) s.pos.reserve(n_reserve);
+    if (is_face) s.start.reserve(n_reserve + 1), s.idx.reserve(std::min(3 * n_reserve, left));
+}
+
+// The header, then each element's items: x, y, z of vertices and the vertex_indices lists of
+// faces are kept, every other property is read past (ASCII) or skipped (binary).
+TriangleMesh read_ply(const std::string& path, const std::string& data, const LoadOptions& opt) {
+    Lines L{data.data(), data.data() + data.size()};
+    std::vector<PlyElem> elems;
+    const int format = read_ply_header(path, L, elems);
+    sv t;
 
     const bool ascii = format == 0, big = format == 2;
     const unsigned char* p = reinterpret_cast<const unsigned char*>(L.p);
@@ -424,16 +455,7 @@ TriangleMesh read_ply(const std::string& path, const std::string& data, const Lo
         if (is_face && ilist < 0) fail(path, "PLY face element has no vertex_indices list");
         if (E.props.empty()) continue;
 
-        const size_t left = size_t(end - p);
-        size_t min_size = 0;  // bytes per element, at least
-        for (const PlyProp& pr : E.props) min_size += ascii ? 2 : size_t(kPlySize[pr.list ? pr.count_type : pr.type]);
-        if (!ascii && E.count > left / min_size)
-            fail(path, fmt("truncated: PLY header declares %llu '%s' elements (at least %llu bytes) but only %zu "
-                           "bytes follow", (unsigned long long)E.count, E.name.c_str(),
-                           (unsigned long long)(E.count * min_size), left));
-        const size_t n_reserve = size_t(std::min<uint64_t>(E.count, left / min_size + 1));
-        if (is_vertex) s.pos.reserve(n_reserve);
-        if (is_face) s.start.reserve(n_reserve + 1), s.idx.reserve(std::min(3 * n_reserve, left));
+        reserve_ply_element(path, E, ascii, size_t(end - p), is_vertex, is_face, s);
 
         uint64_t item = 0;
         auto value = [&](int type) -> double {  // next value of the data section

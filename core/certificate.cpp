@@ -1,0 +1,107 @@
+// The certified interval of a one-sided distance: design notes, "Certified answer"
+// (../shared/design/algorithm.md). See certificate.h.
+#include "certificate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "cascade.h"
+#include "point_triangle.h"
+#include "target_solver.h"
+
+namespace hlens {
+
+namespace {
+
+std::string format_g17(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+// The distance from the point origin + offset to the mesh of `grid`, computed without forming
+// that point: each triangle is taken relative to `origin` (an input point), so the result is off
+// by rounding relative to the distances involved, not to the coordinates' magnitude (which would
+// be an ulp of 1e6 for a mesh of size 1 far from the origin). The grid's nearest point to the
+// rounded sum bounds which triangles can be nearest; `to_point` is the nearest point.
+double witness_distance(const MeshGrid& grid, const Vec3& origin, const Vec3& offset, Vec3& to_point) {
+    const TriangleMesh& B = grid.mesh();
+    const Vec3 p = origin + offset;
+    const MeshGrid::Nearest q = grid.nearest(p);
+    to_point = q.point;
+    if (q.triangle == UINT32_MAX) return HUGE_VAL;
+    // |p - (origin + offset)| <= half an ulp per axis; triangles farther than d0 + 2 eps from p
+    // are farther from the exact point than the one found.
+    const double eps = 0x1p-53 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z)) * (1 + 1e-9);
+    const double reach = (std::sqrt(q.dist2) + 3 * eps) * (1 + 1e-12);
+    double best = HUGE_VAL;
+    for (size_t t = 0; t < B.num_triangles(); ++t) {
+        const auto c = B.corners(t);
+        if (point_box_distance2(p, vmin(c[0], vmin(c[1], c[2])), vmax(c[0], vmax(c[1], c[2]))) > reach * reach) continue;
+        best = std::min(best, closest_point_on_triangle(offset, c[0] - origin, c[1] - origin, c[2] - origin).dist2);
+    }
+    return std::sqrt(best);
+}
+
+// The witness: the largest exact value, the lowest index among equals. Returns its square, or -1
+// if no target was solved whole.
+double choose_witness(const TargetTable& tab, size_t n, OneSidedResult& r) {
+    double best = -1;
+    for (size_t t = 0; t < n; ++t) {
+        if (tab.value_sq[t] > best) { best = tab.value_sq[t]; r.target = (uint32_t)t; }
+        r.exact_targets += tab.exact[t];
+    }
+    return best;
+}
+
+// lower: the true distance from the witness to B, by exact point-triangle distances over the
+// whole of B, independently of the domain meshes, less their rounding (relative to the distances:
+// the witness is never formed in world coordinates, see witness_distance). Sets the witness points.
+double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const Box3& box, OneSidedResult& r) {
+    // The witness in world coordinates, as TargetSolver::max_point() gives it, and its offset from
+    // the target's frame origin (a corner of the target, an input point).
+    const TargetFrame frame = TargetFrame::make(grid.mesh(side).corners(r.target));
+    const Vec2 w = tab.where[r.target];
+    r.from_point = frame.to_world(w);
+    const Vec3 offset = (w.x * frame.scale) * frame.e1 + (w.y * frame.scale) * frame.e2;
+    Vec3 to_point;
+    const double d_witness = witness_distance(grid.of(1 - side), frame.origin, offset, to_point);
+    r.to_point = to_point;
+    // (A sliver target's witness may lie off the sliver by up to its height, its slack.)
+    return std::max(0.0, std::min(r.distance, d_witness - tab.slack[r.target] - 16 * 0x1p-52 * (box.diagonal() + d_witness)));
+}
+
+// upper: the domain meshes' maximum, widened by a bound on the rounding of coordinates.
+double upper_end(const TargetTable& tab, size_t n, double distance, double coord, const Box3& box) {
+    double upper = std::max(distance, tab.piece_upper);
+    for (size_t t = 0; t < n; ++t)  // a sliver target's value may be short by its height
+        if (tab.slack[t] > 0 && tab.value_sq[t] >= 0) upper = std::max(upper, std::sqrt(tab.value_sq[t]) + tab.slack[t]);
+    upper += 1e-13 * (coord + box.diagonal()) + 1e-12 * distance;
+    return upper;
+}
+
+}  // namespace
+
+void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode, OneSidedResult& r) {
+    const TriangleMesh& A = grid.mesh(side);
+    const TriangleMesh& B = grid.mesh(1 - side);
+    const size_t n = A.num_triangles();
+    const double best = choose_witness(tab, n, r);
+    r.exact_solves = tab.solves;
+    if (best < 0) return;
+    r.distance = std::sqrt(best);
+    Box3 box = A.bounds();
+    box.add(B.bounds());
+    r.lower = lower_end(grid, side, tab, box, r);
+    r.upper = upper_end(tab, n, r.distance, coordinate_magnitude(A, B), box);
+    // A one-sided distance is never below its farthest vertex's distance.
+    if (!r.cancelled && !(r.upper >= std::sqrt(tab.vertex_sq)))
+        throw std::logic_error("internal error: one-sided distance " + format_g17(r.distance) + " (upper " +
+                               format_g17(r.upper) + ") is below the farthest vertex distance " +
+                               format_g17(std::sqrt(tab.vertex_sq)) + " (" + mode_name(mode) + " mode)");
+}
+
+}  // namespace hlens

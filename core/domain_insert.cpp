@@ -1,0 +1,285 @@
+// Straub 2007 §3.1, the insertion of a source triangle into the domain mesh: d^2 := min(d^2,
+// d_T^2). Each domain the source reaches is clipped by the source's regions (half-planes) and by
+// the conic q_domain - q_region = 0 (the clipping primitive, domain_split.cpp); the side where the
+// source is nearer takes its quadratic and label. Then neighbouring domains whose quadratics are
+// equal are merged and collinear vertices dissolved. See domain_mesh.h and
+// ../shared/design/algorithm.md ("The domain mesh").
+#include "domain_mesh.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace hlens {
+
+namespace {
+// A face whose box `b` misses a region's box `rb` (clipped to T'; `empty`: nothing left) needs no
+// cut for it.
+bool box_misses(const Box2& b, const Box2& rb, bool empty) {
+    if (empty) return true;
+    const double m = 1e-9;
+    return rb.hi.x < b.lo.x - m || rb.lo.x > b.hi.x + m || rb.hi.y < b.lo.y - m || rb.lo.y > b.hi.y + m;
+}
+// Nor does a face whose box lies inside the region (the region is convex).
+bool box_inside(const Box2& b, const SourceRegion& reg) {
+    for (const HalfPlane& hp : reg.planes) {
+        if (hp.kind == HalfPlane::All) continue;
+        if (hp.kind == HalfPlane::None) return false;
+        for (Vec2 c : {b.lo, b.hi, Vec2{b.lo.x, b.hi.y}, Vec2{b.hi.x, b.lo.y}})
+            if (dot(hp.n, c) - hp.offset <= 1e-9) return false;
+    }
+    return true;
+}
+}  // namespace
+
+// ---------------------------------------------------------------- inserting a source
+
+void DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listener* L) {
+    delta_ = std::max(delta_, src.delta);
+    std::vector<int>& snapshot = tmp_.snapshot;
+    snapshot.clear();
+    for (int f : live_face_ids()) snapshot.push_back(f);
+    assert(src.regions.size() <= 7);
+    RegionBoxes boxes;
+    clip_regions_to_target(src, boxes);
+    for (int F : snapshot) {
+        if (!faces_[F].alive) continue;
+        if (cull && cull(F)) continue;
+        insert_into_face(F, src, boxes, L);
+    }
+    merge_equal_neighbours(L);
+    dissolve_collinear_vertices();
+}
+
+// Each region clipped to T': a face whose box misses it needs no cut for it, and a face whose box
+// lies inside it (the region is convex) needs none either. The clipped regions' boxes are the same
+// for every face, so they are taken once.
+void DomainMesh::clip_regions_to_target(const SourceProjection& src, RegionBoxes& out) {
+    std::vector<Vec2>& tri = tmp_.tri;
+    tri.clear();
+    for_each_half_edge(0, [&](int h) { tri.push_back(vertices_[half_[h].origin].p); });
+    std::reverse(tri.begin(), tri.end());  // the outside loop runs clockwise
+    for (size_t k = 0; k < src.regions.size(); ++k) {
+        std::vector<Vec2>& P = tmp_.clipped;
+        P.assign(tri.begin(), tri.end());
+        clip_convex_in_place(P, src.regions[k].planes, tmp_.clip_tmp);
+        out.empty[k] = P.empty();
+        for (Vec2 p : P) out.box[k].add(p);
+    }
+}
+
+// Face F (alive when the insertion began) cut by the regions in turn: the pieces inside region k
+// take its quadratic where the source is nearer (apply_region), the rest go on to region k + 1.
+// The last region takes what is left (the regions tile the plane).
+void DomainMesh::insert_into_face(int F, const SourceProjection& src, const RegionBoxes& boxes, const Listener* L) {
+    const size_t R = src.regions.size();
+    std::vector<int>& pending = tmp_.pending;
+    std::vector<int>& inside = tmp_.inside;
+    pending.assign(1, F);
+    for (size_t k = 0; k < R && !pending.empty(); ++k) {
+        const SourceRegion& reg = src.regions[k];
+        inside.clear();
+        if (k + 1 == R) {
+            inside.swap(pending);
+        } else if (pending.size() == 1 && pending[0] == F && box_misses(cached_face_box(F), boxes.box[k], boxes.empty[k])) {
+            continue;
+        } else if (pending.size() == 1 && pending[0] == F && box_inside(cached_face_box(F), reg)) {
+            inside.swap(pending);
+        } else {
+            cut_by_region(reg, L);
+        }
+        for (int P : inside) apply_region(P, src, reg, L);
+    }
+}
+
+// The faces of tmp_.pending cut by the half-planes of `reg`: the pieces inside it go to
+// tmp_.inside, the others become tmp_.pending.
+void DomainMesh::cut_by_region(const SourceRegion& reg, const Listener* L) {
+    std::vector<int>& pending = tmp_.pending;
+    std::vector<int>& inside = tmp_.inside;
+    std::vector<int>& rest = tmp_.rest;
+    std::vector<int>& cur = tmp_.cur;
+    std::vector<int>& nxt = tmp_.nxt;
+    std::vector<SplitPiece>& hp_pieces = tmp_.hp_pieces;
+    rest.clear();
+    for (int P : pending) {
+        cur.assign(1, P);
+        for (const HalfPlane& hp : reg.planes) {
+            if (hp.kind == HalfPlane::All) continue;
+            if (hp.kind == HalfPlane::None) { rest.insert(rest.end(), cur.begin(), cur.end()); cur.clear(); break; }
+            nxt.clear();
+            for (int c : cur) {
+                split_face_into(c, hp.as_quadratic(), hp_pieces);
+                report_split(L, c, hp_pieces, hp.as_quadratic());
+                for (const SplitPiece& pc : hp_pieces) (pc.sign > 0 ? nxt : rest).push_back(pc.face);
+            }
+            cur.swap(nxt);
+            if (cur.empty()) break;
+        }
+        inside.insert(inside.end(), cur.begin(), cur.end());
+    }
+    pending.swap(rest);
+}
+
+// Face P lies in region `reg`: where the source is nearer (the conic's positive side), d^2 becomes
+// the region's quadratic.
+void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L) {
+    DomainLabel lab{(int32_t)src.source, reg.kind};
+    if (faces_[P].infinite) {
+        DomainLabel old = faces_[P].label;
+        faces_[P].poly = reg.poly; faces_[P].label = lab; faces_[P].infinite = false;
+        if (L && L->on_relabel) L->on_relabel(P, old, lab);
+        return;
+    }
+    if (same_quadratic(faces_[P].poly, reg.poly, delta_)) return;  // the existing domain keeps it (a tie)
+    Quadratic2 Q = faces_[P].poly - reg.poly;                // > 0 where the source is nearer
+    std::vector<SplitPiece>& pieces = tmp_.pieces;
+    split_face_into(P, Q, pieces);
+    report_split(L, P, pieces, Q);
+    for (const SplitPiece& pc : pieces)
+        if (pc.sign > 0) {
+            DomainLabel old = faces_[pc.face].label;
+            faces_[pc.face].poly = reg.poly; faces_[pc.face].label = lab;
+            if (L && L->on_relabel) L->on_relabel(pc.face, old, lab);
+        }
+}
+
+// The debugger's view of a split: the pieces' ids (built only when someone listens).
+void DomainMesh::report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve) {
+    if (!(L && L->on_split && pieces.size() > 1)) return;
+    std::vector<int>& ids = tmp_.ids;
+    ids.clear();
+    for (const SplitPiece& pc : pieces) ids.push_back(pc.face);
+    L->on_split(parent, ids, curve);
+}
+
+// ---------------------------------------------------------------- merging and dissolving
+
+void DomainMesh::remove_edge(int e) {
+    touch_edge_faces(e);
+    int h = 2 * e, t = 2 * e + 1;
+    int hn = half_[h].next, hp = half_[h].prev, tn = half_[t].next, tp = half_[t].prev;
+    if (hn == t && tn == h) {
+        vertices_[half_[h].origin].alive = false;
+        vertices_[half_[t].origin].alive = false;
+    } else if (hn == t) {  // target of h is the tip of a dangling edge
+        half_[hp].next = tn; half_[tn].prev = hp;
+        vertices_[half_[t].origin].alive = false;
+    } else if (tn == h) {
+        half_[tp].next = hn; half_[hn].prev = tp;
+        vertices_[half_[h].origin].alive = false;
+    } else {
+        half_[hp].next = tn; half_[tn].prev = hp;
+        half_[tp].next = hn; half_[hn].prev = tp;
+    }
+    edges_[e].alive = false;
+    edge_alive_[e] = 0;
+    half_[h].face = half_[t].face = -1;
+}
+
+void DomainMesh::merge_equal_neighbours(const Listener* L) {
+    bool changed = true;
+    // Each pass removes at least one edge, so there are at most as many passes as edges.
+    for (size_t pass = 0; changed && pass <= edges_.size(); ++pass) {
+        changed = false;
+        const std::vector<int>& live_edges = live_edge_ids();  // no edge is added while merging
+        for (size_t i = 0; i < live_edges.size(); ++i) {
+            const size_t e = (size_t)live_edges[i];
+            if (!edge_alive_[e]) continue;
+            int F = half_[2 * e].face, G = half_[2 * e + 1].face;
+            if (F <= 0 || G <= 0) continue;
+            const Face &fa = faces_[F], &fb = faces_[G];
+            bool equal = F == G || (fa.infinite && fb.infinite) ||
+                         (!fa.infinite && !fb.infinite && same_quadratic(fa.poly, fb.poly, delta_));
+            if (!equal) continue;
+            int keep = std::min(F, G), gone = std::max(F, G);
+            std::vector<int>& hes = tmp_.merge_hes;
+            hes.clear();
+            for_each_half_edge(F, [&](int h) { hes.push_back(h); });
+            if (G != F) for_each_half_edge(G, [&](int h) { hes.push_back(h); });
+            remove_edge((int)e);
+            hes.erase(std::remove_if(hes.begin(), hes.end(), [&](int h) { return (h >> 1) == (int)e; }), hes.end());
+            if (gone != keep) faces_[gone].alive = false, faces_[gone].loops.clear(), touch_face(gone);
+            if (hes.empty()) { faces_[keep].alive = false; faces_[keep].loops.clear(); touch_face(keep); ++stats_.warnings; continue; }
+            // Only half-edges still in a loop (a removed dangling edge takes its tip with it).
+            std::vector<int>& live = tmp_.live;
+            live.clear();
+            for (int h : hes)
+                if (edge_alive_[h >> 1]) live.push_back(h);
+            std::vector<int>& fids = tmp_.fids;
+            rebuild_faces(live, keep, fids);
+            if (fids.size() != 1) ++stats_.warnings;
+            ++stats_.merges;
+            if (L && L->on_merge && gone != keep) L->on_merge(keep, gone);
+            changed = true;
+        }
+    }
+}
+
+void DomainMesh::replace_loop_start(int face, int from, int to) {
+    if (face < 0) return;
+    for (int& l : faces_[face].loops) {
+        if (l == from) l = to;
+    }
+}
+
+void DomainMesh::dissolve_collinear_vertices() {
+    std::vector<int>& degree = tmp_.degree;
+    std::vector<int>& any_out = tmp_.any_out;
+    degree.assign(vertices_.size(), 0);
+    any_out.assign(vertices_.size(), -1);
+    for (int e : live_edge_ids())
+        for (int h : {2 * e, 2 * e + 1}) { ++degree[half_[h].origin]; any_out[half_[h].origin] = h; }
+    for (int vi : live_vertex_ids()) {
+        const size_t v = (size_t)vi;
+        if (v < 3) continue;  // the target's corners stay
+        if (!vertices_[v].alive || degree[v] != 2) continue;
+        int o1 = any_out[v];
+        int h1 = half_[o1 ^ 1].next == o1 ? -1 : half_[o1].prev;  // incoming to v on o1's face
+        if (h1 < 0) continue;
+        int h2 = o1;  // h1: a -> v, h2: v -> b
+        int e1 = h1 >> 1, e2 = h2 >> 1;
+        if (e1 == e2 || !edges_[e1].curve.straight() || !edges_[e2].curve.straight()) continue;
+        if (edges_[e1].kind != edges_[e2].kind) continue;
+        int a = half_[h1].origin, b = target(h2);
+        if (a == b) continue;
+        Vec2 pa = vertices_[a].p, pv = vertices_[v].p, pb = vertices_[b].p;
+        Vec2 d1 = pv - pa, d2 = pb - pv;
+        // Two pieces of one line (their equations agree) with v between their far ends. Angles
+        // between tiny pieces mean nothing, so the equations decide, not the positions.
+        const Quadratic2 &q1 = edges_[e1].equation, &q2 = edges_[e2].equation;
+        if (!same_polynomial(q1, q2, 1e-9) && !same_polynomial(q1, q2 * -1.0, 1e-9)) continue;
+        if (dot(d1, d2) < 0 && norm(d1) > kCluster && norm(d2) > kCluster) continue;
+        // h1 becomes a -> b, its twin b -> a; e2 goes away.
+        touch_edge_faces(e1);  // (e2 has the same faces)
+        int t1 = h1 ^ 1, t2 = h2 ^ 1;  // t2: b -> v, t1: v -> a
+        half_[h1].next = half_[h2].next; half_[half_[h2].next].prev = h1;
+        half_[t1].origin = b;
+        half_[t1].prev = half_[t2].prev; half_[half_[t2].prev].next = t1;
+        Edge& E = edges_[e1];
+        Vec2 from = (h1 & 1) ? pb : pa, to = (h1 & 1) ? pa : pb;
+        E.curve = RationalCurve{};
+        E.curve.n0 = from; E.curve.n1 = to - from;
+        E.z0 = 0; E.z1 = 1;
+        set_arc_geometry(e1);
+        edges_[e2].alive = false;
+        edge_alive_[e2] = 0;
+        const int fh2 = half_[h2].face, ft2 = half_[t2].face;
+        half_[h2].face = half_[t2].face = -1;
+        vertices_[v].alive = false;
+        // A loop may start at h2 or t2 only in their own faces (every half-edge of a face's loops
+        // carries that face).
+        replace_loop_start(fh2, h2, h1);
+        replace_loop_start(fh2, t2, t1);
+        replace_loop_start(ft2, h2, h1);
+        replace_loop_start(ft2, t2, t1);
+#ifndef NDEBUG
+        for (const Face& f : faces_)
+            for (int l : f.loops) assert(l != h2 && l != t2);
+#endif
+        if (any_out[b] == t2) any_out[b] = t1;
+        if (any_out[a] == h2) any_out[a] = h1;
+    }
+}
+
+}  // namespace hlens

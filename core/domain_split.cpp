@@ -1,0 +1,507 @@
+// Straub 2007 §3.1, the clipping primitive of the domain mesh: split one face by a curve g = 0 (a
+// line of a source's region or the conic q_domain - q_region = 0) and say on which side of it
+// each piece lies. See domain_mesh.h and ../shared/design/algorithm.md ("The domain mesh").
+//
+// split_face_into runs five named steps on one SplitCall: split the boundary where g changes
+// sign; classify vertices and arcs by side; find the chords of the curve inside the face; insert
+// the chords; rebuild the faces and give each its side. The topology edits they use (split_edge,
+// find_wedge, insert_path, rebuild_faces; the last also serves the merging) come first.
+#include "domain_mesh.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace hlens {
+
+namespace {
+constexpr double kSnap = 1e-8;      // crossing points closer than this to a vertex become that vertex
+constexpr double kZero = 1e-12;     // |g| below this (g scaled to unit size) counts as on the curve
+constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
+constexpr double kTwoPi = 6.283185307179586;
+
+double wrap2pi(double a) {
+    a = std::fmod(a, kTwoPi);
+    return a < 0 ? a + kTwoPi : a;
+}
+}  // namespace
+
+// ---------------------------------------------------------------- topology edits
+
+int DomainMesh::split_edge(int e, double z) {
+    Vec2 p = edges_[e].curve(z);
+    int v = add_vertex(p);
+    Edge copy = edges_[e];
+    int e2 = add_edge(copy.curve, z, copy.z1, copy.equation, copy.kind, copy.curve_kind);
+    edges_[e].z1 = z;
+    set_arc_geometry(e);
+    int h = 2 * e, t = 2 * e + 1, g = 2 * e2, gt = 2 * e2 + 1;
+    // forward: h a->v, g v->b
+    half_[g].origin = v;
+    half_[g].face = half_[h].face;
+    half_[g].next = half_[h].next;
+    half_[half_[h].next].prev = g;
+    half_[h].next = g;
+    half_[g].prev = h;
+    // backward: gt b->v, t v->a
+    half_[gt].origin = half_[t].origin;
+    half_[t].origin = v;
+    half_[gt].face = half_[t].face;
+    half_[gt].prev = half_[t].prev;
+    half_[half_[t].prev].next = gt;
+    half_[gt].next = t;
+    half_[t].prev = gt;
+    touch_edge_faces(e);  // a curved arc's pieces bulge no farther, but their boxes round differently
+    return v;
+}
+
+int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2) {
+    std::vector<int>& cands = tmp_.wedge_cands;
+    cands.clear();
+    for (int h : hes)
+        if (half_[h].face == face && half_[h].next >= 0 && edges_[h >> 1].alive && target(h) == v) cands.push_back(h);
+    if (cands.size() == 1) return cands[0];
+    if (cands.empty()) return -1;
+    double ad = std::atan2(dir.y, dir.x);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (int hin : cands) {
+            int hout = half_[hin].next;
+            Vec2 dout = out_tangent(hout), dback = out_tangent(hin ^ 1);
+            if (pass == 1) {  // tangential ties: compare short secants instead of tangents
+                dout = he_point(hout, 1e-3) - vertices_[v].p;
+                dback = he_point(hin ^ 1, 1e-3) - vertices_[v].p;
+                ad = std::atan2(dir2.y, dir2.x);
+            }
+            double ao = std::atan2(dout.y, dout.x), ab = std::atan2(dback.y, dback.x);
+            double rd = wrap2pi(ad - ao), rb = wrap2pi(ab - ao);
+            if (rb == 0) rb = kTwoPi;
+            if (rd > 1e-12 && rd < rb - 1e-12) return hin;
+        }
+    }
+    return cands[0];
+}
+
+void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& es, bool closed_new) {
+    assert(verts.size() == es.size() + 1);
+    touch_face(face);
+    size_t n = es.size();
+    for (size_t k = 0; k < n; ++k) {
+        int h = 2 * es[k];
+        half_[h].origin = verts[k];
+        half_[h + 1].origin = verts[k + 1];
+        half_[h].face = half_[h + 1].face = face;
+        if (k + 1 < n) {
+            int hn = 2 * es[k + 1];
+            half_[h].next = hn; half_[hn].prev = h;
+            half_[hn + 1].next = h + 1; half_[h + 1].prev = hn + 1;
+        }
+    }
+    int first = 2 * es.front(), last = 2 * es.back();
+    if (closed_new) {  // a loop through a new vertex: close it on itself
+        half_[last].next = first; half_[first].prev = last;
+        half_[first + 1].next = last + 1; half_[last + 1].prev = first + 1;
+        return;
+    }
+    // Hook the ends into the wedges of `face` at the end vertices.
+    auto dir_out = [&](int h) { return out_tangent(h); };
+    auto sec_out = [&](int h) { return he_point(h, 1e-3) - vertices_[half_[h].origin].p; };
+    int a = verts.front(), b = verts.back();
+    // An end at a vertex with no edge yet (the centre of a line pair) becomes the tip of a
+    // dangling path, which later paths to the same vertex attach to.
+    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first));
+    if (hin < 0) {
+        half_[first + 1].next = first; half_[first].prev = first + 1;
+    } else {
+        int hout = half_[hin].next;
+        half_[hin].next = first; half_[first].prev = hin;
+        half_[first + 1].next = hout; half_[hout].prev = first + 1;
+    }
+    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1));
+    if (hin2 < 0) {
+        half_[last].next = last + 1; half_[last + 1].prev = last;
+    } else {
+        int hout2 = half_[hin2].next;
+        half_[hin2].next = last + 1; half_[last + 1].prev = hin2;
+        half_[last].next = hout2; half_[hout2].prev = last;
+    }
+}
+
+void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids) {
+    touch_face(reuse);
+    std::vector<int>& cycles = tmp_.cycles;
+    std::vector<double>& areas = tmp_.areas;
+    cycles.clear();
+    areas.clear();
+    const uint64_t seen = tmp_.next_stamp(tmp_.seen_mark, half_.size());
+    for (int h0 : hes) {
+        if (tmp_.seen_mark[h0] == seen) continue;
+        int h = h0, guard = 0;
+        do { tmp_.seen_mark[h] = seen; h = half_[h].next; } while (h != h0 && ++guard < 1000000);
+        cycles.push_back(h0);
+        areas.push_back(loop_area(h0));
+    }
+    std::vector<int>& outers = tmp_.outers;
+    std::vector<int>& holes = tmp_.holes;
+    outers.clear();
+    holes.clear();
+    for (size_t i = 0; i < cycles.size(); ++i) (areas[i] > 0 ? outers : holes).push_back((int)i);
+    if (outers.empty() && !holes.empty()) {  // numerically flat: the largest loop is the outer one
+        auto it = std::max_element(holes.begin(), holes.end(), [&](int x, int y) { return std::fabs(areas[x]) < std::fabs(areas[y]); });
+        outers.push_back(*it);
+        holes.erase(it);
+        ++stats_.warnings;
+    }
+    fids.clear();
+    if (!outers.empty()) {
+        // New faces start as copies of `reuse` (its quadratic and label), without its loops.
+        assert(faces_[reuse].alive);  // (dead faces are never revived: see live_faces_)
+        faces_[reuse].loops.clear();
+        const Face proto = faces_[reuse];
+        for (size_t k = 0; k < outers.size(); ++k) {
+            int fid = reuse;
+            if (k > 0) {
+                faces_.push_back(proto);
+                fid = (int)faces_.size() - 1;
+                live_faces_.push_back(fid);
+            }
+            faces_[fid].loops.assign(1, cycles[outers[k]]);
+            faces_[fid].alive = true;
+            fids.push_back(fid);
+        }
+    }
+    for (int hi : holes) {
+        // A point on the hole lies strictly inside exactly the outer loops that enclose the hole.
+        const Edge& E = edges_[cycles[hi] >> 1];
+        Vec2 p = E.curve(0.5 * (E.z0 + E.z1));
+        int best = -1;
+        double best_area = HUGE_VAL;
+        for (size_t k = 0; k < outers.size(); ++k) {
+            int n = loop_crossings(cycles[outers[k]], p);
+            if ((n & 1) && areas[outers[k]] < best_area) { best = (int)k; best_area = areas[outers[k]]; }
+        }
+        if (best < 0) { best = 0; ++stats_.warnings; }
+        faces_[fids[best]].loops.push_back(cycles[hi]);
+    }
+    for (int fid : fids) {
+        for_each_half_edge(fid, [&](int h) { half_[h].face = fid; });
+        touch_face(fid);
+    }
+}
+
+// Newton's method onto the crossing of two curves (a vertex of the split), kept only if it moved
+// little.
+bool DomainMesh::polish_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& p) const {
+    Vec2 x = p;
+    for (int it = 0; it < 4; ++it) {
+        Vec2 gf = f.gradient(x), gg = g.gradient(x);
+        double det = cross(gf, gg);
+        if (std::fabs(det) <= 1e-6 * norm(gf) * norm(gg)) return false;  // nearly tangent: keep p
+        double F = f(x), G = g(x);
+        Vec2 step{(F * gg.y - G * gf.y) / det, (gf.x * G - gg.x * F) / det};
+        x -= step;
+        if (norm(step) < 1e-17) break;
+    }
+    if (norm(x - p) > 1e-7) return false;
+    p = x;
+    return true;
+}
+
+// ---------------------------------------------------------------- the clip primitive
+
+// The state of one split_face_into call, shared by its steps: the face, the curve (scaled to unit
+// size), the vertices found on it, and each boundary arc's side.
+struct DomainMesh::SplitCall {
+    int f;
+    Quadratic2 g;
+    bool g_linear;            // the caller's g is linear (the chords are region boundaries)
+    DomainMesh::Scratch& tmp;
+    uint64_t sided = 0;       // the stamp of tmp.he_mark for the arcs classified by side
+    int npos = 0, nneg = 0;   // boundary arcs on the positive / negative side
+    bool line_like = false;   // the curve is one line or two
+
+    SplitCall(int face, const Quadratic2& g_unit, bool linear, DomainMesh::Scratch& scratch)
+        : f(face), g(g_unit), g_linear(linear), tmp(scratch) {
+        tmp.zero_list.clear();
+    }
+
+    // Vertices on the curve (few): a list, not a flag per vertex.
+    void mark_zero(int v) {
+        if (std::find(tmp.zero_list.begin(), tmp.zero_list.end(), v) == tmp.zero_list.end()) tmp.zero_list.push_back(v);
+    }
+    bool is_zero(int v) const { return std::find(tmp.zero_list.begin(), tmp.zero_list.end(), v) != tmp.zero_list.end(); }
+
+    // Each arc's side, as the signed distance-like value of g at its middle,
+    //   sd = |g(m)| <= kZero ? 0 : g(m) / max(|grad g(m)|, 1e-3):
+    // the arc farthest from the curve is the one whose side is certain. Kept per half-edge of
+    // `hes` (stamped; arcs added later have none) as g(m) and |grad g(m)|^2: the sign of sd is that
+    // of g(m), and its value (a root and a division) is only taken where signs disagree.
+    bool marked(int h) const { return (size_t)h < tmp.he_mark.size() && tmp.he_mark[h] == sided; }
+    double side_value(int h) const {
+        const double val = tmp.side_val[h];
+        return std::fabs(val) <= kZero ? 0.0 : val / std::max(std::sqrt(tmp.side_n2[h]), 1e-3);
+    }
+    int side_sign(int h) const {  // the sign of side_value(h)
+        const double val = tmp.side_val[h];
+        if (!(std::fabs(val) <= HUGE_VAL && std::fabs(tmp.side_n2[h]) < HUGE_VAL)) {  // NaN or inf: be exact
+            const double v = side_value(h);
+            return v > 0 ? 1 : (v < 0 ? -1 : 0);
+        }
+        return std::fabs(val) <= kZero ? 0 : (val > 0 ? 1 : -1);
+    }
+    bool side_of(int h, double& v) const {
+        if (!marked(h)) return false;
+        v = side_value(h);
+        return true;
+    }
+    // The sign of the side of the arc of `loop_hes` farthest from the curve (the first of equals).
+    int decided_side(const std::vector<int>& loop_hes) const {
+        bool pos = false, neg = false;
+        for (int h : loop_hes)
+            if (marked(h)) {
+                const int sg = side_sign(h);
+                pos |= sg > 0;
+                neg |= sg < 0;
+            }
+        if (!(pos && neg)) return pos ? 1 : (neg ? -1 : 0);
+        double best = 0, v;
+        for (int h : loop_hes)
+            if (side_of(h, v) && std::fabs(v) > std::fabs(best)) best = v;
+        return best > 0 ? 1 : (best < 0 ? -1 : 0);
+    }
+};
+
+std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadratic2& g) {
+    std::vector<SplitPiece> out;
+    split_face_into(f, g, out);
+    return out;
+}
+
+void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<SplitPiece>& out) {
+    out.clear();
+    double gs = g_in.scale();
+    if (!(gs > 0)) { out.push_back({f, 0}); return; }
+    const Quadratic2 g = g_in * (1.0 / gs);
+    {
+        // Most faces lie wholly on one side: a conservative bound over the face's box says so.
+        Box2 b = cached_face_box(f);
+        Interval r = g.range(b.lo, b.hi);
+        if (r.lo > kZero) { out.push_back({f, 1}); return; }
+        if (r.hi < -kZero) { out.push_back({f, -1}); return; }
+    }
+    SplitCall s(f, g, g_in.is_linear(), tmp_);
+    split_boundary_where_g_changes_sign(s);  // 1.
+    classify_by_side(s);                     // 2.
+    find_chords(s);                          // 3.
+    if (tmp_.chords.empty()) {               // the curve only touches the face: one piece
+        out.push_back({f, side_of_piece(s, f, tmp_.hes)});
+        return;
+    }
+    insert_chords(s);                        // 4.
+    rebuild_split_faces(s, out);             // 5.
+}
+
+// 1. Split the boundary where g changes sign. Leaves the face's half-edges in tmp_.hes.
+void DomainMesh::split_boundary_where_g_changes_sign(SplitCall& s) {
+    std::vector<int>& hes = tmp_.hes;
+    collect_half_edges(s.f, hes);
+    std::vector<int>& edge_list = tmp_.edge_list;  // each edge once, in the order of `hes`
+    edge_list.clear();
+    {
+        const uint64_t seen = tmp_.next_stamp(tmp_.edge_mark, edges_.size());
+        for (int h : hes)
+            if (tmp_.edge_mark[h >> 1] != seen) {
+                tmp_.edge_mark[h >> 1] = seen;
+                edge_list.push_back(h >> 1);
+            }
+    }
+    for (int e : edge_list) split_arc_at_sign_changes(s, e);
+    collect_half_edges(s.f, hes);
+}
+
+// A vertex where g changes sign along arc e: a new one (polished onto both curves), or an end of
+// the arc if the crossing is that close to it.
+void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
+    const Quadratic2& g = s.g;
+    const Poly along = edges_[e].curve.compose(g);  // g along the arc, times w^2
+    if (no_sign_change(along, edges_[e].z0, edges_[e].z1)) return;  // most arcs: nothing to find
+    const RationalCurve curve = edges_[e].curve;   // copies: split_edge may move edges_
+    const Quadratic2 eq = edges_[e].equation;
+    double roots[kMaxSignChangeRoots];
+    const int nroots = sign_change_roots(along, edges_[e].z0, edges_[e].z1, roots);
+    int cur = e;
+    for (int k = 0; k < nroots; ++k) {
+        const double z = roots[k];
+        Vec2 p = curve(z);
+        int va = half_[2 * cur].origin, vb = half_[2 * cur + 1].origin;
+        if (norm(p - vertices_[va].p) <= kSnap) { s.mark_zero(va); ++stats_.snaps; continue; }
+        if (norm(p - vertices_[vb].p) <= kSnap) { s.mark_zero(vb); ++stats_.snaps; continue; }
+        if (!(z > edges_[cur].z0 && z < edges_[cur].z1)) continue;
+        polish_on_two(g, eq, p);
+        int v = split_edge(cur, z);
+        vertices_[v].p = p;
+        touch_edge_faces(cur);  // the polished vertex moved off curve(z) by rounding
+        s.mark_zero(v);
+        cur = (int)edges_.size() - 1;
+    }
+}
+
+// 2. Classify vertices on the curve and boundary arcs by side (see SplitCall::side_value).
+void DomainMesh::classify_by_side(SplitCall& s) {
+    const Quadratic2& g = s.g;
+    const std::vector<int>& hes = tmp_.hes;
+    for (int h : hes) {
+        Vec2 p = vertices_[half_[h].origin].p;
+        const double gp = std::fabs(g(p));
+        if (gp <= kZero) { s.mark_zero(half_[h].origin); continue; }
+        // Far from the curve by a bound of |grad g| (the norm is at most |gx| + |gy|): no root needed.
+        const Vec2 gr = g.gradient(p);
+        if (gp > kZero + kOnCurve * ((std::fabs(gr.x) + std::fabs(gr.y)) * (1 + 1e-12))) continue;
+        if (gp <= kZero + kOnCurve * norm(gr)) s.mark_zero(half_[h].origin);
+    }
+    s.sided = tmp_.next_stamp(tmp_.he_mark, half_.size());
+    if (tmp_.side_val.size() < half_.size()) {
+        tmp_.side_val.resize(half_.size());
+        tmp_.side_n2.resize(half_.size());
+    }
+    for (int h : hes) {
+        const Edge& E = edges_[h >> 1];
+        Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
+        const Vec2 gr = g.gradient(m);
+        tmp_.side_val[h] = g(m);
+        tmp_.side_n2[h] = dot(gr, gr);  // norm(gr) is sqrt of exactly this
+        tmp_.he_mark[h] = s.sided;
+        const int sg = s.side_sign(h);
+        s.npos += sg > 0;
+        s.nneg += sg < 0;
+    }
+}
+
+// 3. Pieces of the curve g = 0 inside the face, between consecutive crossing points, into
+// tmp_.chords.
+void DomainMesh::find_chords(SplitCall& s) {
+    tmp_.chords.clear();
+    std::vector<int>& zverts = tmp_.zverts;
+    zverts.clear();
+    for (int h : tmp_.hes) {
+        int v = half_[h].origin;
+        if (s.is_zero(v) && std::find(zverts.begin(), zverts.end(), v) == zverts.end()) zverts.push_back(v);
+    }
+    ConicDecomposition& dec = tmp_.dec;
+    decompose_conic(s.g, dec);
+    if (dec.type == ConicType::LinePair && dec.components.size() == 2) add_line_pair_centre(s);
+    s.line_like = dec.type == ConicType::Line || dec.type == ConicType::ParallelLines || dec.type == ConicType::LinePair;
+    for (const CurveComponent& comp : dec.components) add_chords_of_component(s, comp);
+}
+
+// The two lines of a line pair cross at the centre: inside the face it must be a vertex of both.
+void DomainMesh::add_line_pair_centre(SplitCall& s) {
+    const CurveComponent &l1 = tmp_.dec.components[0], &l2 = tmp_.dec.components[1];
+    double den = cross(l1.u, l2.u);
+    if (den == 0) return;
+    Vec2 m = l1.c + (cross(l2.c - l1.c, l2.u) / den) * l1.u;
+    bool near = false;
+    for (int v : tmp_.zverts) near |= norm(vertices_[v].p - m) <= kCluster;
+    if (!near && point_in_face(s.f, m)) {
+        int vm = add_vertex(m);
+        s.mark_zero(vm);
+        tmp_.zverts.push_back(vm);
+    }
+}
+
+// The pieces of one component of the curve between the crossing points on it, less those along
+// the face's boundary or outside the face.
+void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& comp) {
+    const int f = s.f;
+    std::vector<std::pair<double, int>>& pts = tmp_.pts;
+    pts.clear();
+    for (int v : tmp_.zverts) {
+        Vec2 p = vertices_[v].p;
+        double t = comp.param_of(p);
+        if (norm(comp.at(t) - p) <= 1e-7) pts.push_back({t, v});
+    }
+    std::sort(pts.begin(), pts.end());
+    std::vector<Chord>& cand = tmp_.cand;
+    cand.clear();
+    if (comp.closed()) {
+        if (pts.empty()) {
+            if (s.npos + s.nneg > 0 && point_in_face(f, comp.at(0)) && point_in_face(f, comp.at(M_PI)))
+                cand.push_back({comp, 0, kTwoPi, -1, -1});
+        } else {
+            for (size_t i = 0; i < pts.size(); ++i) {
+                auto [ta, va] = pts[i];
+                auto [tb, vb] = pts[(i + 1) % pts.size()];
+                if (i + 1 == pts.size()) tb += kTwoPi;
+                cand.push_back({comp, ta, tb, va, vb});
+            }
+        }
+    } else {
+        for (size_t i = 0; i + 1 < pts.size(); ++i)
+            cand.push_back({comp, pts[i].first, pts[i + 1].first, pts[i].second, pts[i + 1].second});
+    }
+    for (const Chord& c : cand) {
+        if (c.va >= 0 && c.va == c.vb && !comp.closed()) continue;
+        if (c.va >= 0 && !(c.t1 - c.t0 > 1e-12)) continue;
+        Vec2 mid = comp.at(0.5 * (c.t0 + c.t1));
+        if (c.va >= 0 && !comp.closed() && norm(vertices_[c.va].p - vertices_[c.vb].p) <= kCluster) continue;
+        if (c.va >= 0) {
+            // A piece along the face's boundary is already there; one outside is not ours.
+            if (near_boundary(f, mid, kCluster)) continue;
+            if (!point_in_face(f, mid)) continue;
+        }
+        tmp_.chords.push_back(c);
+    }
+}
+
+// 4. Insert the chords, each as a path of well-conditioned arcs.
+void DomainMesh::insert_chords(SplitCall& s) {
+    std::vector<int>& hes = tmp_.hes;
+    ArcKind kind = s.line_like && s.g_linear ? ArcKind::RegionBoundary : ArcKind::Conic;
+    for (const Chord& c : tmp_.chords) {
+        std::vector<CurveComponent::Piece>& pieces = tmp_.arc_pieces;
+        c.comp.pieces(c.t0, c.t1, pieces);
+        std::vector<int>& verts = tmp_.verts;
+        std::vector<int>& es = tmp_.es;
+        verts.clear();
+        es.clear();
+        int start = c.va >= 0 ? c.va : add_vertex(c.comp.at(c.t0));
+        verts.push_back(start);
+        for (size_t k = 0; k < pieces.size(); ++k) {
+            int e = add_edge(pieces[k].curve, pieces[k].z0, pieces[k].z1, s.g, kind, c.comp.kind);
+            es.push_back(e);
+            if (k + 1 < pieces.size()) verts.push_back(add_vertex(pieces[k].curve(pieces[k].z1)));
+        }
+        verts.push_back(c.va >= 0 ? c.vb : start);
+        if (c.va < 0 && pieces.size() < 2) { ++stats_.warnings; continue; }
+        for (int e : es) { hes.push_back(2 * e); hes.push_back(2 * e + 1); }
+        insert_path(s.f, hes, verts, es, c.va < 0);
+        ++stats_.splits;
+    }
+}
+
+// 5. The face's half-edges now form several loops: one face per outer loop, each given its side.
+void DomainMesh::rebuild_split_faces(SplitCall& s, std::vector<SplitPiece>& out) {
+    std::vector<int>& fids = tmp_.fids;
+    rebuild_faces(tmp_.hes, s.f, fids);
+    std::vector<int>& fh = tmp_.fh;
+    for (int fid : fids) {
+        int pos = 0, neg = 0;
+        collect_half_edges(fid, fh);
+        double v;
+        for (int h : fh)
+            if (s.side_of(h, v)) { pos += v > 1e-6; neg += v < -1e-6; }
+        if (pos > 0 && neg > 0) ++stats_.warnings;
+        out.push_back({fid, side_of_piece(s, fid, fh)});
+    }
+}
+
+// A piece's side: that of its boundary arc farthest from the curve, else of a point inside it.
+int DomainMesh::side_of_piece(SplitCall& s, int face, const std::vector<int>& loop_hes) const {
+    int side = s.decided_side(loop_hes);
+    if (side == 0) {
+        Vec2 p;
+        if (interior_point(face, p)) side = s.g(p) > 0 ? 1 : (s.g(p) < 0 ? -1 : 0);
+    }
+    return side;
+}
+
+}  // namespace hlens
