@@ -249,6 +249,10 @@ void DomainMesh::dissolve_collinear_vertices() {
         // between tiny pieces mean nothing, so the equations decide, not the positions.
         const Quadratic2 &q1 = edges_[e1].equation, &q2 = edges_[e2].equation;
         if (!same_polynomial(q1, q2, 1e-9) && !same_polynomial(q1, q2 * -1.0, 1e-9)) continue;
+        // One equation is one line only if it is linear: the two lines of a line pair (a conic
+        // q_domain - q_region that factors) share their quadratic, and v where they cross is a
+        // corner. Such pieces are one line only if v lies on the chord from a to b.
+        if (!q1.is_linear() && std::fabs(cross(pb - pa, pv - pa)) > 1e-9 * norm(pb - pa)) continue;
         if (dot(d1, d2) < 0 && norm(d1) > kCluster && norm(d2) > kCluster) continue;
         // h1 becomes a -> b, its twin b -> a; e2 goes away.
         touch_edge_faces(e1);  // (e2 has the same faces)
