@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <imgui.h>
+
 namespace hlens::gui {
 
 namespace {
@@ -38,6 +40,24 @@ Rgb8 colormap(double t) {
     if (!(t >= 0)) t = 0;   // NaN too
     if (t > 1) t = 1;
     return colormap_table()[(size_t)std::lround(t * (kColormapSize - 1))];
+}
+
+// A colour per label: the source's index hashed to a hue, the region varying lightness and
+// saturation (face region light, edge regions middle, vertex regions dark).
+unsigned domain_label_colour(const DomainLabel& l, bool infinite) {
+    if (infinite || l.source < 0) return IM_COL32(70, 72, 80, 255);
+    // Golden-ratio hues: consecutive indices (often neighbours in a mesh) get far-apart hues.
+    float hue = (float)std::fmod(0.13 + 0.6180339887498949 * (double)l.source, 1.0);
+    const int r = (int)l.region;
+    static const float kSat[7] = {0.35f, 0.55f, 0.55f, 0.55f, 0.72f, 0.72f, 0.72f};
+    static const float kVal[7] = {0.96f, 0.84f, 0.76f, 0.68f, 0.58f, 0.50f, 0.42f};
+    static const float kHue[7] = {0.0f, -0.04f, 0.0f, 0.04f, -0.04f, 0.0f, 0.04f};
+    const float s = kSat[r], v = kVal[r];
+    hue += kHue[r] + 1.0f;
+    hue -= std::floor(hue);
+    float rr, gg, bb;
+    ImGui::ColorConvertHSVtoRGB(hue, s, v, rr, gg, bb);
+    return ImGui::ColorConvertFloat4ToU32(ImVec4(rr, gg, bb, 1.0f));
 }
 
 }  // namespace hlens::gui

@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdint>
 
+#include <hlens/domain_mesh.h>
+
 namespace hlens::gui {
 
 constexpr int kColormapSize = 256;
@@ -17,5 +19,8 @@ Rgb8 colormap(double t);   // t in [0, 1], clamped; nearest table entry
 constexpr float kNotExactGrey[2] = {0.62f, 0.46f};
 // The stripes' period in pixels for a font size (so they follow DPI scaling).
 inline float hatch_period(float font_px) { return font_px * 0.6f < 6.0f ? 6.0f : font_px * 0.6f; }
+
+// The colour of a domain label (ImU32) in the domain view, the graph and the overlay.
+unsigned domain_label_colour(const DomainLabel& l, bool infinite);
 
 }  // namespace hlens::gui

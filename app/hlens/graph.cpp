@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "app_state.h"
+#include "colormap.h"
 #include "layout.h"
 #include "gl.h"
 #include "shader.h"

@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "colormap.h"
 #include "gl.h"
 #include <hlens/label_check.h>
 #include "shader.h"

@@ -4,31 +4,12 @@
 #include <cmath>
 #include <map>
 
-#include <imgui.h>
-
 #include "app_state.h"
+#include "colormap.h"
 
 namespace hlens::gui {
 
 namespace {
-
-// A colour per label: the source's index hashed to a hue, the region varying lightness and
-// saturation (face region light, edge regions middle, vertex regions dark).
-ImU32 label_colour(const DomainLabel& l, bool infinite) {
-    if (infinite || l.source < 0) return IM_COL32(70, 72, 80, 255);
-    // Golden-ratio hues: consecutive indices (often neighbours in a mesh) get far-apart hues.
-    float hue = (float)std::fmod(0.13 + 0.6180339887498949 * (double)l.source, 1.0);
-    const int r = (int)l.region;
-    static const float kSat[7] = {0.35f, 0.55f, 0.55f, 0.55f, 0.72f, 0.72f, 0.72f};
-    static const float kVal[7] = {0.96f, 0.84f, 0.76f, 0.68f, 0.58f, 0.50f, 0.42f};
-    static const float kHue[7] = {0.0f, -0.04f, 0.0f, 0.04f, -0.04f, 0.0f, 0.04f};
-    const float s = kSat[r], v = kVal[r];
-    hue += kHue[r] + 1.0f;
-    hue -= std::floor(hue);
-    float rr, gg, bb;
-    ImGui::ColorConvertHSVtoRGB(hue, s, v, rr, gg, bb);
-    return ImGui::ColorConvertFloat4ToU32(ImVec4(rr, gg, bb, 1.0f));
-}
 
 // Ear clipping of a simple polygon (either orientation); returns index triples.
 std::vector<int> triangulate(const std::vector<Vec2>& p) {
@@ -110,7 +91,6 @@ void face_polygon(const DomainMesh& m, int f, std::vector<Vec2>& outer, std::vec
     outer = simplify(m.sample_loop(m.faces()[f].loops[0], 24));
     tris = triangulate(outer);
 }
-unsigned domain_label_colour(const DomainLabel& l, bool infinite) { return label_colour(l, infinite); }
 
 // ---- Stepper
 
@@ -351,7 +331,7 @@ void Stepper::rebuild() {
         d.face = f;
         d.label = F[f].label;
         d.infinite = F[f].infinite;
-        d.colour = label_colour(d.label, d.infinite);
+        d.colour = domain_label_colour(d.label, d.infinite);
         d.area = m->face_area(f);
         face_polygon(*m, f, d.outer, d.tris);
         domains.push_back(std::move(d));

@@ -164,8 +164,6 @@ struct Stepper {
 // (index triples into `outer`), as the domain view fills it.
 void face_polygon(const DomainMesh& m, int f, std::vector<Vec2>& outer, std::vector<int>& tris);
 
-// The colour of a domain label in the 2D domain view (ImU32), shared by the graph view.
-unsigned domain_label_colour(const DomainLabel& l, bool infinite);
 
 // Keeps the stepper on the selected target of the current direction (reset when it changes).
 struct AppState;

@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "colormap.h"
+
 namespace hlens::gui {
 
 namespace {
