@@ -39,8 +39,9 @@ double witness_distance(const MeshGrid& grid, const Vec3& origin, const Vec3& of
     const double reach = (std::sqrt(q.dist2) + 3 * eps) * (1 + 1e-12);
     double best = HUGE_VAL;
     for (size_t t = 0; t < B.num_triangles(); ++t) {
+        const Box3 tb = B.triangle_bounds(t);
+        if (point_box_distance2(p, tb.lo, tb.hi) > reach * reach) continue;
         const auto c = B.corners(t);
-        if (point_box_distance2(p, vmin(c[0], vmin(c[1], c[2])), vmax(c[0], vmax(c[1], c[2]))) > reach * reach) continue;
         best = std::min(best, closest_point_on_triangle(offset, c[0] - origin, c[1] - origin, c[2] - origin).dist2);
     }
     return std::sqrt(best);

@@ -4,12 +4,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <atomic>
 #include <cmath>
-#include <exception>
-#include <string>
-#include <mutex>
 #include <numeric>
-#include <thread>
 
 #include "cascade.h"
 #include "certificate.h"

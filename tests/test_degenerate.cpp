@@ -166,6 +166,12 @@ long double segment_d2(const L3& p, const L3& a, const L3& b) {
     return dotl(d, d);
 }
 
+// Does the point a + q of abc's plane (n its normal) lie in the closed triangle abc?
+bool projects_inside(const L3& q, const L3& a, const L3& b, const L3& c, const L3& n) {
+    return dotl(crossl(b - a, q), n) >= 0 && dotl(crossl(c - b, q - (b - a)), n) >= 0 &&
+           dotl(crossl(a - c, q - (c - a)), n) >= 0;
+}
+
 // Squared distance from p to the closed triangle abc: the plane where p projects inside, else the
 // nearest of the three edges. A triangle whose height is below 1e-12 of its longest edge is its
 // edges (off by that height at most): its normal, a small cross product of long edges, would be
@@ -179,9 +185,7 @@ long double triangle_d2(const L3& p, const L3& a, const L3& b, const L3& c) {
         const L3 w = p - a;
         const long double h = dotl(w, n);
         const L3 q = w - n * (h / nn);  // p's projection, relative to a
-        const bool inside = dotl(crossl(b - a, q), n) >= 0 && dotl(crossl(c - b, q - (b - a)), n) >= 0 &&
-                            dotl(crossl(a - c, q - (c - a)), n) >= 0;
-        if (inside) best = std::min(best, h * h / nn);
+        if (projects_inside(q, a, b, c, n)) best = std::min(best, h * h / nn);
     }
     return best;
 }
@@ -211,9 +215,7 @@ L3 closest_on_triangle(const L3& p, const L3& a, const L3& b, const L3& c) {
     const long double l2 = std::max({dotl(b - a, b - a), dotl(c - b, c - b), dotl(a - c, a - c)});
     if (nn > 1e-24L * l2 * l2) {  // as triangle_d2
         const L3 q = (p - a) - n * (dotl(p - a, n) / nn);
-        const bool inside = dotl(crossl(b - a, q), n) >= 0 && dotl(crossl(c - b, q - (b - a)), n) >= 0 &&
-                            dotl(crossl(a - c, q - (c - a)), n) >= 0;
-        if (inside) best = a + q;
+        if (projects_inside(q, a, b, c, n)) best = a + q;
     }
     return best;
 }
