@@ -12,16 +12,16 @@
 
 namespace hlens {
 
-namespace {
-// A face whose box `b` misses a region's box `rb` (clipped to T'; `empty`: nothing left) needs no
+// A face whose box `b` misses region k's box (clipped to T'; or nothing of it is left) needs no
 // cut for it.
-bool box_misses(const Box2& b, const Box2& rb, bool empty) {
-    if (empty) return true;
+bool DomainMesh::region_box_misses(const Box2& b, const RegionBoxes& boxes, size_t k) {
+    if (boxes.empty[k]) return true;
+    const Box2& rb = boxes.box[k];
     const double m = 1e-9;
     return rb.hi.x < b.lo.x - m || rb.lo.x > b.hi.x + m || rb.hi.y < b.lo.y - m || rb.lo.y > b.hi.y + m;
 }
 // Nor does a face whose box lies inside the region (the region is convex).
-bool box_inside(const Box2& b, const SourceRegion& reg) {
+bool DomainMesh::region_box_inside(const Box2& b, const SourceRegion& reg) {
     for (const HalfPlane& hp : reg.planes) {
         if (hp.kind == HalfPlane::All) continue;
         if (hp.kind == HalfPlane::None) return false;
@@ -30,25 +30,34 @@ bool box_inside(const Box2& b, const SourceRegion& reg) {
     }
     return true;
 }
-}  // namespace
 
 // ---------------------------------------------------------------- inserting a source
 
-void DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listener* L) {
+bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listener* L) {
     delta_ = std::max(delta_, src.delta);
     std::vector<int>& snapshot = tmp_.snapshot;
     snapshot.clear();
     for (int f : live_face_ids()) snapshot.push_back(f);
     assert(src.regions.size() <= 7);
     RegionBoxes boxes;
-    clip_regions_to_target(src, boxes);
+    bool clipped = false;  // the regions are clipped to T' when a face first needs them
+    const size_t nv = vertices_.size(), ne = edges_.size();
+    const long nr = relabels_;
     for (int F : snapshot) {
         if (!faces_[F].alive) continue;
         if (cull && cull(F)) continue;
-        insert_into_face(F, src, boxes, L);
+        if (!clipped) clip_regions_to_target(src, boxes), clipped = true;
+        // Someone watches every cut (the debugger): the paper's insertion. Otherwise only the
+        // regions that may be nearer (domain_reach.cpp): the same d^2, without the cuts the
+        // merging would undo.
+        if (L) insert_into_face(F, src, boxes, L);
+        else insert_where_nearer(F, src, boxes);
     }
+    // Nothing cut, nothing relabelled: the mesh is as the last insertion left it, merged.
+    if (!L && vertices_.size() == nv && edges_.size() == ne && relabels_ == nr) return false;
     merge_equal_neighbours(L);
     dissolve_collinear_vertices();
+    return true;
 }
 
 // Each region clipped to T': a face whose box misses it needs no cut for it, and a face whose box
@@ -81,9 +90,9 @@ void DomainMesh::insert_into_face(int F, const SourceProjection& src, const Regi
         inside.clear();
         if (k + 1 == R) {
             inside.swap(pending);
-        } else if (pending.size() == 1 && pending[0] == F && box_misses(cached_face_box(F), boxes.box[k], boxes.empty[k])) {
+        } else if (pending.size() == 1 && pending[0] == F && region_box_misses(cached_face_box(F), boxes, k)) {
             continue;
-        } else if (pending.size() == 1 && pending[0] == F && box_inside(cached_face_box(F), reg)) {
+        } else if (pending.size() == 1 && pending[0] == F && region_box_inside(cached_face_box(F), reg)) {
             inside.swap(pending);
         } else {
             cut_by_region(reg, L);
@@ -128,6 +137,7 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
     if (faces_[P].infinite) {
         DomainLabel old = faces_[P].label;
         faces_[P].poly = reg.poly; faces_[P].label = lab; faces_[P].infinite = false;
+        ++relabels_;
         if (L && L->on_relabel) L->on_relabel(P, old, lab);
         return;
     }
@@ -140,6 +150,7 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
         if (pc.sign > 0) {
             DomainLabel old = faces_[pc.face].label;
             faces_[pc.face].poly = reg.poly; faces_[pc.face].label = lab;
+            ++relabels_;
             if (L && L->on_relabel) L->on_relabel(pc.face, old, lab);
         }
 }

@@ -10,7 +10,8 @@
 // (see regions.h): T' has unit size, so every tolerance here is relative.
 //
 // The structure and its queries are in domain_mesh.cpp, the insertion of a source (with the
-// merging) in domain_insert.cpp, the clipping primitive (split_face) in domain_split.cpp.
+// merging) in domain_insert.cpp, the clipping primitive (split_face) in domain_split.cpp, and the
+// test of where a source can be nearer, which spares the insertion most cuts, in domain_reach.cpp.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -93,8 +94,10 @@ public:
     explicit DomainMesh(const std::array<Vec2, 3>& ccw_corners);
 
     // Insert one source (its regions with their quadratics): d^2 := min(d^2, d_T^2).
-    // `cull(face)` may return true for faces the source provably cannot reach.
-    void insert(const SourceProjection& src, FaceCull cull = {}, const Listener* listener = nullptr);
+    // `cull(face)` may return true for faces the source provably cannot reach. With a listener,
+    // the paper's insertion, every cut reported; without, only the regions that may be nearer are
+    // cut in (domain_reach.cpp). Returns false if the mesh is unchanged (never with a listener).
+    bool insert(const SourceProjection& src, FaceCull cull = {}, const Listener* listener = nullptr);
 
     // Maxima of each face's quadratic on its boundary; returns every candidate point.
     std::vector<Candidate> update_maxima();
@@ -236,8 +239,16 @@ private:
 
     // The insertion of a source (domain_insert.cpp): its regions clipped to T' once, then each face.
     struct RegionBoxes { Box2 box[7]; bool empty[7]; };
+    long relabels_ = 0;  // pieces given to a source, ever (insert: did anything change?)
     void clip_regions_to_target(const SourceProjection& src, RegionBoxes& out);
+    static bool region_box_misses(const Box2& b, const RegionBoxes& boxes, size_t k);
+    static bool region_box_inside(const Box2& b, const SourceRegion& reg);
     void insert_into_face(int F, const SourceProjection& src, const RegionBoxes& boxes, const Listener* L);
+    // Without a listener (domain_reach.cpp): the regions that may be nearer on F, and the tests.
+    void insert_where_nearer(int F, const SourceProjection& src, const RegionBoxes& boxes);
+    bool region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox);
+    bool arcs_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g, const Box2& b);
+    bool lines_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g);
     void cut_by_region(const SourceRegion& reg, const Listener* L);
     void apply_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
     void report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve);

@@ -111,13 +111,16 @@ void sure_sides(const Poly& p, double a, double b, double fa, double& x1, double
 
 }  // namespace
 
-// The one root of p in [a, b] given p(a) = fa and p(b) of opposite signs, by bisection. Its result
-// is that of evaluating p at every midpoint; the midpoints whose sign is certain (sure_sides) are
-// decided without the evaluation, which is what makes the search cheap: far from the root the
-// steps no longer wait for p.
+// The one root of p in [a, b] given p(a) = fa and p(b) of opposite signs. When sure_sides proves
+// both sides of a narrow bracket, its middle; otherwise by bisection, whose result is that of
+// evaluating p at every midpoint; the midpoints whose sign is certain are decided without the
+// evaluation: far from the root the steps no longer wait for p.
 double bisect_root(const Poly& p, double a, double b, double fa) {
     double x1, x2;
     sure_sides(p, a, b, fa, x1, x2);
+    // Both sides proved: the root lies in [x1, x2], an interval as narrow as the evaluation's
+    // noise allows, where bisection could only follow the rounding's signs. Its middle will do.
+    if (x1 > a && x2 < b) return 0.5 * (x1 + x2);
     int it = 0;
     // While the midpoints fall where the sign is certain, the steps are a chain of additions and
     // comparisons; the choice of half is made without a branch (it is as unpredictable as the

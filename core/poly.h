@@ -38,9 +38,11 @@ std::vector<double> sign_change_roots(const Poly& p, double lo, double hi);
 constexpr int kMaxSignChangeRoots = 16;  // > 2 deg - 1, the most the recursion can report
 int sign_change_roots(const Poly& p, double lo, double hi, double (&out)[kMaxSignChangeRoots]);
 
-// The root of p in [a, b] by bisection, given fa = p(a) and p(b) of opposite signs: the midpoint
-// where p evaluates to exactly 0, or the last midpoint once the interval cannot shrink. The same
-// result as evaluating p at every midpoint, with the evaluations whose sign is certain skipped.
+// The root of p in [a, b], given fa = p(a) and p(b) of opposite signs. Where p is monotone there
+// with a slope that makes the root's position certain to within the evaluation's rounding (most
+// calls), the middle of that proved bracket; otherwise by bisection: the midpoint where p
+// evaluates to exactly 0, or the last midpoint once the interval cannot shrink, with the
+// evaluations whose sign is certain skipped.
 double bisect_root(const Poly& p, double a, double b, double fa);
 
 // True if sign_change_roots(p, lo, hi) certainly finds nothing, by a cheap test (the two ends of a

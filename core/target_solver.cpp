@@ -285,12 +285,12 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
         double d = std::sqrt(source_distance2(frame_, sc, c));
         return d > r && (d - r) * (d - r) > F.max_value * (1 + 1e-9);
     };
-    mesh_->insert(proj, cull, watching() ? &L : nullptr);
+    const bool changed = mesh_->insert(proj, cull, watching() ? &L : nullptr);
     if (validate_each_) {
         std::string msg = validate(validate_thorough_);
         if (!msg.empty()) throw std::logic_error("target " + std::to_string(target_) + ", after source " + std::to_string(s) + ": " + msg);
     }
-    update_maximum();
+    if (changed) update_maximum();  // an unchanged mesh has the same maxima (with a listener, always changed)
 }
 
 void TargetSolver::update_maximum() {

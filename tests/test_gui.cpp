@@ -1438,7 +1438,8 @@ TEST(GuiExactMap, CancelStopsTheFillInAndContinueFinishesIt) {
     REQUIRE_XVFB();
     fs::path dir = scratch_dir(), png = dir / "cancel.png";
     const std::string button = "240,461";
-    Outcome c = run_gui({"--direction", "ba", "--exact-colormap", "wait", "--click", button}, png, dir);
+    // Paced (50 ms a triangle), so that the click comes before the fill-in ends on any machine.
+    Outcome c = run_gui({"--direction", "ba", "--exact-colormap", "wait", "--exact-map-pace", "50", "--click", button}, png, dir);
     ASSERT_EQ(c.code, 0) << c.err;
     size_t em = c.out.find("\"exact_colormap\"");
     ASSERT_NE(em, std::string::npos);
@@ -1452,7 +1453,7 @@ TEST(GuiExactMap, CancelStopsTheFillInAndContinueFinishesIt) {
     EXPECT_GT(count(im, vp[0], vp[3] / 6, im.w, vp[3] * 9 / 10, [](auto p) { return grey(p) && p[0] > 90; }), 200)
         << "the triangles not reached stay not yet exact";
 
-    Outcome r = run_gui({"--direction", "ba", "--exact-colormap", "wait", "--click", button, "--wait", "3", "--click", button},
+    Outcome r = run_gui({"--direction", "ba", "--exact-colormap", "wait", "--exact-map-pace", "50", "--click", button, "--wait", "3", "--click", button},
                         png, dir);
     ASSERT_EQ(r.code, 0) << r.err;
     em = r.out.find("\"exact_colormap\"");

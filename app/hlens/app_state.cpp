@@ -44,6 +44,7 @@ bool init_state(AppState& s, const Options& opt) {
         return false;
     }
     if (!opt.export_dir.empty()) s.export_dir = opt.export_dir;
+    s.exact_pace_ms = opt.exact_pace_ms;
     s.exact_mode = opt.exact_colormap == 0   ? ExactMode::Off
                    : opt.exact_colormap == 1 ? ExactMode::On
                    : opt.exact_colormap == 2 ? ExactMode::Wait

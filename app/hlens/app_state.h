@@ -102,6 +102,7 @@ struct AppState {
     ColourRange range[2];
     ExactMap exact[2];            // per direction, like range
     ExactMode exact_mode = ExactMode::On;
+    int exact_pace_ms = 0;        // --exact-map-pace
     // The fill-in job, filled by the loop each frame (its progress is exact[exact_side].exact).
     bool exact_running = false;
     int exact_side = 0;

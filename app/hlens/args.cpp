@@ -42,6 +42,8 @@ const char* usage_text() {
            "                      yet exact\". off: never fill in; wait: with --screenshot, the picture\n"
            "                      waits until every triangle is exact (the default of --screenshot;\n"
            "                      with on it is taken as soon as the distances are known)\n"
+           "  --exact-map-pace MS the fill-in waits MS milliseconds after each triangle (for tests:\n"
+           "                      its Cancel, whatever the speed of the machine)\n"
            "  --stats             compute the exact surface statistics of both directions at start-up\n"
            "                      (as the sidebar's \"Compute statistics\"; --screenshot waits for them)\n"
            "  --color-by max|mean|rms\n"
@@ -186,6 +188,8 @@ Options parse_args(const std::vector<std::string>& args) {
             o.input.push_back({InputAction::Wait, 0, 0, (float)parse_long(value(), a), 0});
         } else if (a == "--exact-colormap") {
             o.exact_colormap = parse_choice(value(), {"off", "on", "wait"}, "--exact-colormap expects on, off or wait");
+        } else if (a == "--exact-map-pace") {
+            o.exact_pace_ms = (int)parse_long(value(), a);
         } else if (a == "--color-by") {
             o.color_by = parse_choice(value(), {"max", "mean", "rms"}, "--color-by expects max, mean or rms");
         } else if (a == "--tolerance") {

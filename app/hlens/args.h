@@ -2,7 +2,8 @@
 //                         [--step N|end] [--event-log] [--case NAME [--epsilon E]] [--export-case DIR]
 //                         [--click X,Y] [--double-click X,Y] [--drag X0,Y0,X1,Y1] [--right-drag X0,Y0,X1,Y1]
 //                         [--wheel X,Y,STEPS] [--hover X,Y] [--wait FRAMES] [--key home|f12|left|right|space]
-//                         [--layout-file PATH] [--dpi-scale S] [--exact-colormap on|off|wait] [--units NAME]
+//                         [--layout-file PATH] [--dpi-scale S] [--exact-colormap on|off|wait] [--exact-map-pace MS]
+//                         [--units NAME]
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -46,6 +47,7 @@ struct Options {
     // triangles stay "not yet exact"), 2 wait (on; --screenshot waits until it is complete).
     // -1: not given (on; wait with --screenshot).
     int exact_colormap = -1;
+    int exact_pace_ms = 0;       // --exact-map-pace MS: the fill-in waits MS per triangle (tests of Cancel)
     int color_by = 0;            // --color-by max|mean|rms: 0, 1, 2 (mean and RMS imply --stats)
     double tolerance = -1;       // --tolerance T: the tolerance field, set and on (< 0: not given)
     std::string export_errors;   // --export-errors PATH.ply: write the error maps (with --screenshot)

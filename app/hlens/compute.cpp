@@ -1,6 +1,8 @@
 #include "compute.h"
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include <hlens/mesh_io.h>
 
@@ -123,7 +125,7 @@ std::optional<ComputeOutput> ComputeJob::take_result() { return take_when_ended(
 
 // ---------------------------------------------------------------- ExactMapJob
 
-void ExactMapJob::start(std::shared_ptr<const LoadedScene> scene, int side, std::vector<uint32_t> order) {
+void ExactMapJob::start(std::shared_ptr<const LoadedScene> scene, int side, std::vector<uint32_t> order, int pace_ms) {
     stop();   // the previous run's thread is joined before its state is reset
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -134,17 +136,20 @@ void ExactMapJob::start(std::shared_ptr<const LoadedScene> scene, int side, std:
     side_ = side;
     total_ = order.size();
     solved_.store(0);
-    launch([this, scene, side, order = std::move(order)]() mutable {
+    launch([this, scene, side, pace_ms, order = std::move(order)]() mutable {
         set_phase("exact colour map");
         try {
             TargetMaximaOptions opt;
             opt.cancel = &cancel_flag();
             opt.order = std::move(order);
             opt.progress = [this](double f) { set_progress(f); };
-            opt.on_target = [this](uint32_t t, double d) {
-                std::lock_guard<std::mutex> lock(mutex_);
-                values_.emplace_back(t, d);
-                solved_.fetch_add(1);
+            opt.on_target = [this, pace_ms](uint32_t t, double d) {
+                {
+                    std::lock_guard<std::mutex> lock(mutex_);
+                    values_.emplace_back(t, d);
+                    solved_.fetch_add(1);
+                }
+                if (pace_ms > 0) std::this_thread::sleep_for(std::chrono::milliseconds(pace_ms));
             };
             if (!opt.order.empty()) exact_target_maxima(*scene->grid, side, opt);
             set_phase(cancel_flag().load() ? "Cancelled" : "Done");

@@ -117,7 +117,8 @@ class ExactMapJob : public Worker {
 public:
     ~ExactMapJob() override { stop(); }
     // `order`: the targets still to solve, in order. Replaces (cancels) a previous run.
-    void start(std::shared_ptr<const LoadedScene> scene, int side, std::vector<uint32_t> order);
+    // `pace_ms`: a wait after each target (--exact-map-pace, for tests).
+    void start(std::shared_ptr<const LoadedScene> scene, int side, std::vector<uint32_t> order, int pace_ms = 0);
     int side() const { return side_; }
     const LoadedScene* scene() const { return scene_.get(); }
     size_t total() const { return total_; }

@@ -108,7 +108,7 @@ void update_fill_in(AppState& s, Jobs& jobs, Scene& scene) {
         const OneSidedResult& r = d == 0 ? s.result.a_to_b : s.result.b_to_a;
         std::vector<uint8_t> known(m.value.size());
         for (size_t t = 0; t < known.size(); ++t) known[t] = m.value[t] >= 0;
-        exact_job.start(s.scene, d, order_by_decreasing_bound(r.target_max, known));
+        exact_job.start(s.scene, d, order_by_decreasing_bound(r.target_max, known), s.exact_pace_ms);
     }
 }
 

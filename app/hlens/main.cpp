@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
     StartTarget start(opt.target, opt.step);
     Script script = make_script(opt.input);
     Headless headless;
+    ViewRect last_view{0, 0, -1, -1};   // no layout yet
 
     while (window_open(window)) {
         // ---- 2. Poll events (interactive and idle: sleep until something happens)
@@ -52,7 +53,10 @@ int main(int argc, char** argv) {
         update_jobs(s, jobs, *view.scene, view.need_home, start);
         // ---- 4. Begin the frame; headless, scripted input replaces the mouse and keys
         begin_frame(window);
-        feed_script(script, s.headless, jobs.compute_done && start.target_applied, jobs.trace.running());
+        //      (it starts once the distances are in and the 3D tile kept its place for a frame)
+        const bool settled = s.view.x == last_view.x && s.view.y == last_view.y && s.view.w == last_view.w && s.view.h == last_view.h;
+        last_view = s.view;
+        feed_script(script, s.headless, jobs.compute_done && start.target_applied && (settled || script.pos > 0), jobs.trace.running());
         new_frame(window, s);
         // ---- 5. Layout; the 3D view's mouse and keyboard, only when ImGui does not want them
         layout(s, ImGui::GetIO().DisplaySize.x, ImGui::GetIO().DisplaySize.y);

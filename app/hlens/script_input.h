@@ -25,7 +25,8 @@ struct Script {
 Script make_script(const std::vector<InputAction>& actions);
 
 // Between the backends' new frame and ImGui::NewFrame. The script starts once `results_in` (the
-// distances, --target applied) and no trace is running, then plays one frame per frame (a
+// distances, --target applied, and the 3D tile where it was the frame before: main.cpp) and no
+// trace is running, then plays one frame per frame (a
 // click's trace must not delay the next input); afterwards the mouse stays where it ended,
 // buttons up (a hover lasts until the picture). Does nothing in interactive runs.
 void feed_script(Script& script, bool headless, bool results_in, bool trace_running);

@@ -273,15 +273,24 @@ void frame_camera(View3D& v, const AppState& s, bool home, bool focus) {
     const long key = s.stepper.open && s.stepper.active() ? s.stepper.side * (1L << 40) + s.stepper.target : -1;
     if (key != v.focused_key && key >= 0) focus = true;
     v.focused_key = key;
+    const Camera& c = v.camera;
+    const bool untouched = c.pivot == v.focused.pivot && c.distance == v.focused.distance && c.yaw == v.focused.yaw && c.pitch == v.focused.pitch;
+    if (key >= 0 && v.focus_aspect > 0 && untouched && (v.aspect != v.focus_aspect || s.computed != v.focus_computed)) focus = true;
     Vec3 centroid;
     double reach = 0;
     if (focus && scene.loaded() && selected_target_ball(s, centroid, reach)) {
-        const int d = s.direction;
-        bool exact = false;
-        const double tmax = s.computed ? target_value(s, d, s.selected[d], exact) : 0;
+        // The room is the target's bound from the distance run (at least its maximum), not the
+        // exact value, which the background map may or may not have found yet: the framing must
+        // not depend on that timing.
+        const OneSidedResult& r = s.direction == 0 ? s.result.a_to_b : s.result.b_to_a;
+        const long t = s.selected[s.direction];
+        const double tmax = s.computed && t >= 0 && (size_t)t < r.target_max.size() ? r.target_max[t] : 0;
         const float half = (float)(1.15 * (reach + (std::isfinite(tmax) ? tmax : 0.0))) + 1e-6f;
         const glm::vec3 g = scene.local(centroid);
         v.camera.focus(g - glm::vec3(half), g + glm::vec3(half), v.aspect);
+        v.focus_aspect = v.aspect;
+        v.focus_computed = s.computed;
+        v.focused = v.camera;
     }
 }
 

@@ -31,6 +31,13 @@ struct View3D {
     bool press_in_view[3] = {false, false, false};
     bool press_was_double = false;
     long focused_key = -1;
+    // What that framing used (the tile's aspect, whether the distances were in) and the camera it
+    // gave: while the camera is untouched, a change of either (the timeline's tiles settle a
+    // frame after it opens; the distances may come before or after) frames the target again, so
+    // the view does not depend on the frame it first happened at.
+    float focus_aspect = 0;
+    bool focus_computed = false;
+    Camera focused;
 };
 
 // The renderer and picking (needs the GL context). False with a message on stderr.

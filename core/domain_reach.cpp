@@ -1,0 +1,185 @@
+// Where a source can be nearer: the insertion of Straub 2007 §3.1 without the cuts that the
+// merging would undo. See domain_mesh.h and ../shared/design/algorithm.md ("The domain mesh").
+//
+// The paper's insertion (domain_insert.cpp) cuts every domain the source reaches by the source's
+// seven regions, then each piece by the conic q_domain - q_region = 0, and finally merges the
+// pieces where the source was not nearer back into one domain. On real pairs most of those cuts
+// are undone: on a coarse target among fine sources, 61% of insertions change nothing and half of
+// the regions that reach a domain win none of it. Here a region is cut into a domain only if it
+// may be nearer somewhere on it, decided without cutting (region_nowhere_nearer): q_F - q_R < 0
+// on F ∩ R is checked where its maximum can be, on supersets of those places, so a "nowhere" is
+// certain and the pieces it saves are exactly those the merging would have joined again.
+//
+// The result is the same function d^2 := min(d^2, d_T^2) on the same domains, with fewer spurious
+// vertices left on curved arcs (tests: Lean.*, which compare it with the paper's insertion). The
+// debugger, which shows every cut as an event, runs the paper's insertion (insert with a
+// Listener); everything else (paper and fast mode, statistics) runs this one.
+#include "domain_mesh.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace hlens {
+
+namespace {
+constexpr double kNearer = 1e-12;      // g (scaled to unit size) must stay below -this: split_face's kZero
+constexpr double kRegionSlack = 1e-9;  // regions and boxes widened by this (frame units, T' of unit size)
+
+// The largest value of the polynomial p (degree <= 2) on [lo, hi].
+double max_on(Poly p, double lo, double hi) {
+    p.trim();
+    assert(p.deg <= 2);
+    double m = std::max(p(lo), p(hi));
+    if (p.deg == 2 && p.c[2] < 0) {
+        const double t = -p.c[1] / (2 * p.c[2]);
+        if (t > lo && t < hi) m = std::max(m, p(t));
+    }
+    return m;
+}
+
+// [lo, hi] of the line o + t u clipped by the half-plane (widened by kRegionSlack); false if empty.
+bool clip_param(const HalfPlane& hp, Vec2 o, Vec2 u, double& lo, double& hi) {
+    if (hp.kind == HalfPlane::All) return true;
+    if (hp.kind == HalfPlane::None) return false;
+    const double a = dot(hp.n, u), b = hp.offset - kRegionSlack * norm(hp.n) - dot(hp.n, o);  // inside: a t >= b
+    if (a > 0) lo = std::max(lo, b / a);
+    else if (a < 0) hi = std::min(hi, b / a);
+    else if (b > 0) return false;
+    return lo <= hi;
+}
+
+bool boxes_miss(const Box2& a, const Box2& b) {
+    return a.hi.x < b.lo.x || a.lo.x > b.hi.x || a.hi.y < b.lo.y || a.lo.y > b.hi.y;
+}
+}  // namespace
+
+// Face F (alive when the insertion began): the regions that may be nearer somewhere on it are
+// cut in, in the paper's order, and their pieces where the source is nearer relabelled
+// (apply_region). The last region may take what is left uncut only if no region before it was
+// passed over as nowhere nearer (the regions tile the plane, so then the rest is in it).
+void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const RegionBoxes& boxes) {
+    const size_t R = src.regions.size();
+    unsigned may_win = 0;
+    bool passed_over = false;
+    for (size_t k = 0; k < R; ++k) {
+        if (region_box_misses(cached_face_box(F), boxes, k)) continue;
+        if (region_nowhere_nearer(F, src.regions[k], boxes.box[k])) { passed_over = true; continue; }
+        may_win |= 1u << k;
+    }
+    std::vector<int>& pending = tmp_.pending;
+    std::vector<int>& inside = tmp_.inside;
+    pending.assign(1, F);
+    for (size_t k = 0; k < R && may_win && !pending.empty(); ++k) {
+        if (!(may_win & (1u << k))) continue;
+        const SourceRegion& reg = src.regions[k];
+        inside.clear();
+        if (k + 1 == R && !passed_over) inside.swap(pending);
+        else if (pending.size() == 1 && pending[0] == F && region_box_inside(cached_face_box(F), reg)) inside.swap(pending);
+        else cut_by_region(reg, nullptr);
+        for (int P : inside) apply_region(P, src, reg, nullptr);
+    }
+}
+
+// True if region R of the source is nowhere nearer than face F's domain on F ∩ R: g = q_F - q_R
+// < 0 there (by split_face's margin), so the paper's insertion would give no piece of F to R. A
+// quadratic that is not strictly concave takes its maximum over a compact set on the set's
+// boundary, which lies on F's arcs inside R and on R's lines inside F; a strictly concave one may
+// also take it at its centre. Each is checked on a superset (a curved arc whole, a line between
+// its first and last crossing of F's boundary), so "true" is certain and "false" means "cut".
+bool DomainMesh::region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox) {
+    const Face& face = faces_[F];
+    if (face.infinite) return false;
+    if (same_quadratic(face.poly, reg.poly, delta_)) return true;  // a tie: the domain keeps it
+    Quadratic2 g = face.poly - reg.poly;
+    const double gs = g.scale();
+    if (!(gs > 0)) return false;
+    g = g * (1.0 / gs);
+    const Box2 fb = cached_face_box(F);
+    const Box2 b{{std::max(fb.lo.x, rbox.lo.x) - kRegionSlack, std::max(fb.lo.y, rbox.lo.y) - kRegionSlack},
+                 {std::min(fb.hi.x, rbox.hi.x) + kRegionSlack, std::min(fb.hi.y, rbox.hi.y) + kRegionSlack}};
+    if (b.lo.x > b.hi.x || b.lo.y > b.hi.y) return true;  // F's box misses R's
+    if (g.range(b.lo, b.hi).hi < -kNearer) return true;
+    const double det = g.a * g.c - g.b * g.b;
+    if (g.a < 0 && det > 0) {  // strictly concave: its centre, if in the box
+        const Vec2 x{(g.b * g.e - g.c * g.d) / det, (g.b * g.d - g.a * g.e) / det};
+        if (x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y && !(g(x) < -kNearer)) return false;
+    }
+    return arcs_nowhere_nearer(F, reg, g, b) && lines_nowhere_nearer(F, reg, g);
+}
+
+// g < 0 on F's arcs inside R: a straight arc clipped to R exactly, a curved one whole (its box
+// permitting).
+bool DomainMesh::arcs_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g, const Box2& b) {
+    bool ok = true;
+    for_each_half_edge(F, [&](int h) {
+        if (!ok) return;
+        const Edge& E = edges_[h >> 1];
+        const Vec2 pa = vertices_[half_[h].origin].p, pb = vertices_[target(h)].p;
+        if (E.curve.straight()) {
+            double lo = 0, hi = 1;
+            for (const HalfPlane& hp : reg.planes)
+                if (!clip_param(hp, pa, pb - pa, lo, hi)) return;
+            RationalCurve seg;
+            seg.n0 = pa; seg.n1 = pb - pa;
+            ok = max_on(seg.compose(g), lo, hi) < -kNearer;
+            return;
+        }
+        Box2 ab = arc_geometry(h >> 1).bulge;
+        ab.add(pa); ab.add(pb);
+        if (boxes_miss(ab, b)) return;
+        ok = g(pa) < -kNearer && one_sign_on(E.curve.compose(g), E.z0, E.z1);
+    });
+    return ok;
+}
+
+// g < 0 on R's lines inside F: each line between its first and last crossing of F's boundary (a
+// superset of line ∩ F: F is bounded, so a line that meets it crosses its boundary), clipped to
+// R's other half-planes. A straight arc crosses the line between its ends' feet; a curved one
+// within its box's shadow.
+bool DomainMesh::lines_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g) {
+    for (const HalfPlane& hp : reg.planes) {
+        if (hp.kind != HalfPlane::Line) continue;
+        const double nn = norm(hp.n);
+        if (!(nn > 0)) return false;
+        const Vec2 u{-hp.n.y / nn, hp.n.x / nn}, o = hp.n * (hp.offset / (nn * nn));
+        const double tol = 1e-12 * nn;
+        double tmin = HUGE_VAL, tmax = -HUGE_VAL;
+        auto cover = [&](Vec2 p) {
+            const double t = dot(p - o, u);
+            tmin = std::min(tmin, t);
+            tmax = std::max(tmax, t);
+        };
+        for_each_half_edge(F, [&](int h) {
+            const Vec2 pa = vertices_[half_[h].origin].p, pb = vertices_[target(h)].p;
+            if (edges_[h >> 1].curve.straight()) {
+                const double ha = dot(hp.n, pa) - hp.offset, hb = dot(hp.n, pb) - hp.offset;
+                if ((ha > tol && hb > tol) || (ha < -tol && hb < -tol)) return;
+                cover(pa), cover(pb);
+                return;
+            }
+            Box2 ab = arc_geometry(h >> 1).bulge;
+            ab.add(pa); ab.add(pb);
+            const Vec2 corners[4] = {ab.lo, ab.hi, Vec2{ab.lo.x, ab.hi.y}, Vec2{ab.hi.x, ab.lo.y}};
+            double lo = HUGE_VAL, hi = -HUGE_VAL;
+            for (Vec2 c : corners) {
+                const double v = dot(hp.n, c) - hp.offset;
+                lo = std::min(lo, v), hi = std::max(hi, v);
+            }
+            if (lo > tol || hi < -tol) return;
+            for (Vec2 c : corners) cover(c);
+        });
+        if (!(tmin <= tmax)) continue;  // the line misses F
+        double lo = tmin - kRegionSlack, hi = tmax + kRegionSlack;
+        bool empty = false;
+        for (const HalfPlane& other : reg.planes)
+            if (&other != &hp && !clip_param(other, o, u, lo, hi)) { empty = true; break; }
+        if (empty) continue;
+        RationalCurve line;
+        line.n0 = o; line.n1 = u;
+        if (!(max_on(line.compose(g), lo, hi) < -kNearer)) return false;
+    }
+    return true;
+}
+
+}  // namespace hlens
