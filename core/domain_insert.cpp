@@ -34,6 +34,9 @@ bool DomainMesh::region_box_inside(const Box2& b, const SourceRegion& reg) {
 // ---------------------------------------------------------------- inserting a source
 
 bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listener* L) {
+    // Merging looks only at edges beside a face this insertion touched: the others' neighbours
+    // were unequal after the last merging, unless the tie rule's allowance has grown.
+    const uint64_t since = src.delta > delta_ ? 0 : clock_;
     delta_ = std::max(delta_, src.delta);
     std::vector<int>& snapshot = tmp_.snapshot;
     snapshot.clear();
@@ -55,7 +58,7 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
     }
     // Nothing cut, nothing relabelled: the mesh is as the last insertion left it, merged.
     if (!L && vertices_.size() == nv && edges_.size() == ne && relabels_ == nr) return false;
-    merge_equal_neighbours(L);
+    merge_equal_neighbours(L, since);
     dissolve_collinear_vertices();
     return true;
 }
@@ -138,6 +141,7 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
         DomainLabel old = faces_[P].label;
         faces_[P].poly = reg.poly; faces_[P].label = lab; faces_[P].infinite = false;
         ++relabels_;
+        touch_face(P);
         if (L && L->on_relabel) L->on_relabel(P, old, lab);
         return;
     }
@@ -151,6 +155,7 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
             DomainLabel old = faces_[pc.face].label;
             faces_[pc.face].poly = reg.poly; faces_[pc.face].label = lab;
             ++relabels_;
+            touch_face(pc.face);
             if (L && L->on_relabel) L->on_relabel(pc.face, old, lab);
         }
 }
@@ -188,7 +193,8 @@ void DomainMesh::remove_edge(int e) {
     half_[h].face = half_[t].face = -1;
 }
 
-void DomainMesh::merge_equal_neighbours(const Listener* L) {
+void DomainMesh::merge_equal_neighbours(const Listener* L, uint64_t since) {
+    auto touched = [&](int f) { return (size_t)f < face_stamp_.size() && face_stamp_[f] > since; };
     bool changed = true;
     // Each pass removes at least one edge, so there are at most as many passes as edges.
     for (size_t pass = 0; changed && pass <= edges_.size(); ++pass) {
@@ -199,6 +205,7 @@ void DomainMesh::merge_equal_neighbours(const Listener* L) {
             if (!edge_alive_[e]) continue;
             int F = half_[2 * e].face, G = half_[2 * e + 1].face;
             if (F <= 0 || G <= 0) continue;
+            if (since > 0 && !touched(F) && !touched(G)) continue;
             const Face &fa = faces_[F], &fb = faces_[G];
             bool equal = F == G || (fa.infinite && fb.infinite) ||
                          (!fa.infinite && !fb.infinite && same_quadratic(fa.poly, fb.poly, delta_));

@@ -137,7 +137,8 @@ public:
     struct SplitPiece { int face; int sign; };
     std::vector<SplitPiece> split_face(int f, const Quadratic2& g);
     int split_edge(int e, double z);
-    void merge_equal_neighbours(const Listener* listener = nullptr);
+    // `since`: only edges beside a face touched after that clock value (0: every edge).
+    void merge_equal_neighbours(const Listener* listener = nullptr, uint64_t since = 0);
 
 private:
     std::vector<Vertex> vertices_;
@@ -149,7 +150,7 @@ private:
 
     // face_box() is asked for many times per insertion (culling, region tests, split_face), mostly
     // of faces nothing has touched since. Every edit of a face's loops, of the half-edges, arcs or
-    // vertices on them stamps the face (touch_face: face_stamp_ = ++clock_); a box is kept with
+    // vertices on them, and every relabelling, stamps the face (touch_face: face_stamp_ = ++clock_); a box is kept with
     // the clock it was computed at and used while no later stamp says the face changed.
     uint64_t clock_ = 0;
     std::vector<uint64_t> face_stamp_, box_stamp_;

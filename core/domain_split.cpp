@@ -323,6 +323,16 @@ void DomainMesh::split_boundary_where_g_changes_sign(SplitCall& s) {
 void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
     const Quadratic2& g = s.g;
     const Poly along = edges_[e].curve.compose(g);  // g along the arc, times w^2
+    // A polished vertex sits up to 1e-7 off its arcs' curves, so an arc's end as the curve has it
+    // may lie across g = 0 from the vertex there: the arc then finds no crossing near that end, the
+    // vertex (off the curve by more than kOnCurve) is not on it either, and the split would miss
+    // the sliver between them (a face kept whole across a region line). Such a vertex is on the
+    // curve, as far as this split can tell.
+    for (int end = 0; end < 2; ++end) {
+        const int v = half_[2 * e + end].origin;
+        const double gv = g(vertices_[v].p), ge = along(end ? edges_[e].z1 : edges_[e].z0);
+        if ((gv > 0 && ge < 0) || (gv < 0 && ge > 0)) s.mark_zero(v);
+    }
     if (no_sign_change(along, edges_[e].z0, edges_[e].z1)) return;  // most arcs: nothing to find
     const RationalCurve curve = edges_[e].curve;   // copies: split_edge may move edges_
     const Quadratic2 eq = edges_[e].equation;
