@@ -67,16 +67,30 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
 // lies inside it (the region is convex) needs none either. The clipped regions' boxes are the same
 // for every face, so they are taken once.
 void DomainMesh::clip_regions_to_target(const SourceProjection& src, RegionBoxes& out) {
-    std::vector<Vec2>& tri = tmp_.tri;
-    tri.clear();
-    for_each_half_edge(0, [&](int h) { tri.push_back(vertices_[half_[h].origin].p); });
-    std::reverse(tri.begin(), tri.end());  // the outside loop runs clockwise
+    // T' is its three corners (vertices 0-2, counter-clockwise; the points its boundary gained
+    // since lie between them). Clipped by at most three half-planes it keeps at most six corners.
     for (size_t k = 0; k < src.regions.size(); ++k) {
-        std::vector<Vec2>& P = tmp_.clipped;
-        P.assign(tri.begin(), tri.end());
-        clip_convex_in_place(P, src.regions[k].planes, tmp_.clip_tmp);
-        out.empty[k] = P.empty();
-        for (Vec2 p : P) out.box[k].add(p);
+        Vec2 buf[2][12];
+        int n = 3, cur = 0;
+        for (int i = 0; i < 3; ++i) buf[0][i] = vertices_[i].p;
+        for (const HalfPlane& h : src.regions[k].planes) {
+            if (h.kind == HalfPlane::All) continue;
+            if (h.kind == HalfPlane::None || n + 1 > 11) { n = 0; break; }
+            const Vec2* in = buf[cur];
+            Vec2* o = buf[cur ^ 1];
+            int m = 0;
+            for (int i = 0; i < n; ++i) {
+                const Vec2 p = in[i], q = in[i + 1 < n ? i + 1 : 0];
+                const double fp = dot(h.n, p) - h.offset, fq = dot(h.n, q) - h.offset;
+                if (fp >= 0) o[m++] = p;
+                if ((fp >= 0) != (fq >= 0)) o[m++] = p + (fp / (fp - fq)) * (q - p);
+            }
+            n = m;
+            cur ^= 1;
+            if (n == 0) break;
+        }
+        out.empty[k] = n == 0;
+        for (int i = 0; i < n; ++i) out.box[k].add(buf[cur][i]);
     }
 }
 

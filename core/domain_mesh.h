@@ -204,7 +204,6 @@ private:
         std::vector<double> areas, vval;
         std::vector<int> degree, any_out;
         ConicDecomposition dec;
-        std::vector<Vec2> tri, clipped, clip_tmp;
         std::vector<Chord> chords, cand;
         std::vector<std::pair<double, int>> pts;
         std::vector<int> verts, es, wedge_cands;

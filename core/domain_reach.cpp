@@ -17,7 +17,6 @@
 #include "domain_mesh.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 namespace hlens {
@@ -31,23 +30,24 @@ namespace {
 constexpr double kNowhere = 1e-15;
 constexpr double kRegionSlack = 1e-9;  // regions and boxes widened by this (frame units, T' of unit size)
 
-// The largest value of the polynomial p (degree <= 2) on [lo, hi].
-double max_on(Poly p, double lo, double hi) {
-    p.trim();
-    assert(p.deg <= 2);
-    double m = std::max(p(lo), p(hi));
-    if (p.deg == 2 && p.c[2] < 0) {
-        const double t = -p.c[1] / (2 * p.c[2]);
-        if (t > lo && t < hi) m = std::max(m, p(t));
+// The largest value of g(o + t u) for t in [lo, hi]: a quadratic A t^2 + B t + C in t.
+double max_along(const Quadratic2& g, Vec2 o, Vec2 u, double lo, double hi) {
+    const double A = g.a * u.x * u.x + 2 * g.b * u.x * u.y + g.c * u.y * u.y, B = dot(g.gradient(o), u), C = g(o);
+    auto at = [&](double t) { return (A * t + B) * t + C; };
+    double m = std::max(at(lo), at(hi));
+    if (A < 0) {
+        const double t = -B / (2 * A);
+        if (t > lo && t < hi) m = std::max(m, at(t));
     }
     return m;
 }
 
-// [lo, hi] of the line o + t u clipped by the half-plane (widened by kRegionSlack); false if empty.
+// [lo, hi] of the line o + t u clipped by the half-plane (widened by kRegionSlack: the regions'
+// normals have unit length, regions.cpp); false if empty.
 bool clip_param(const HalfPlane& hp, Vec2 o, Vec2 u, double& lo, double& hi) {
     if (hp.kind == HalfPlane::All) return true;
     if (hp.kind == HalfPlane::None) return false;
-    const double a = dot(hp.n, u), b = hp.offset - kRegionSlack * norm(hp.n) - dot(hp.n, o);  // inside: a t >= b
+    const double a = dot(hp.n, u), b = hp.offset - kRegionSlack - dot(hp.n, o);  // inside: a t >= b
     if (a > 0) lo = std::max(lo, b / a);
     else if (a < 0) hi = std::min(hi, b / a);
     else if (b > 0) return false;
@@ -109,14 +109,14 @@ bool DomainMesh::region_nowhere_nearer(int F, const SourceRegion& reg, const Box
     if (g.a < 0 && det > 0) {  // strictly concave: its centre, if in the box
         const Vec2 x{(g.b * g.e - g.c * g.d) / det, (g.b * g.d - g.a * g.e) / det};
         bool in_r = x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y;
-        for (const HalfPlane& hp : reg.planes) in_r = in_r && (hp.kind != HalfPlane::Line || dot(hp.n, x) >= hp.offset - kRegionSlack * norm(hp.n));
+        for (const HalfPlane& hp : reg.planes) in_r = in_r && (hp.kind != HalfPlane::Line || dot(hp.n, x) >= hp.offset - kRegionSlack);
         if (in_r && !(g(x) <= kNowhere)) return false;
     }
     return arcs_nowhere_nearer(F, reg, g, b) && lines_nowhere_nearer(F, reg, g);
 }
 
-// g < 0 on F's arcs inside R: a straight arc clipped to R exactly, a curved one whole (its box
-// permitting).
+// g <= kNowhere on F's arcs inside R: a straight arc clipped to R exactly, a curved one whole
+// (its box permitting).
 bool DomainMesh::arcs_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g, const Box2& b) {
     bool ok = true;
     for_each_half_edge(F, [&](int h) {
@@ -127,15 +127,19 @@ bool DomainMesh::arcs_nowhere_nearer(int F, const SourceRegion& reg, const Quadr
             double lo = 0, hi = 1;
             for (const HalfPlane& hp : reg.planes)
                 if (!clip_param(hp, pa, pb - pa, lo, hi)) return;
-            RationalCurve seg;
-            seg.n0 = pa; seg.n1 = pb - pa;
-            ok = max_on(seg.compose(g), lo, hi) <= kNowhere;
+            ok = max_along(g, pa, pb - pa, lo, hi) <= kNowhere;
             return;
         }
         Box2 ab = arc_geometry(h >> 1).bulge;
         ab.add(pa); ab.add(pb);
         if (boxes_miss(ab, b)) return;
-        ok = g(pa) < 0 && one_sign_on(E.curve.compose(g), E.z0, E.z1);  // negative all along
+        // The whole arc (a superset of its part inside R): g - kNowhere negative all along it,
+        // by a bound if that suffices, else by its sign changes (none) and one value.
+        Quadratic2 shifted = g;
+        shifted.f -= kNowhere;
+        const Poly along = E.curve.compose(shifted);  // (g - kNowhere) w^2: the sign of g - kNowhere
+        double roots[kMaxSignChangeRoots];
+        ok = along(0.5 * (E.z0 + E.z1)) < 0 && (one_sign_on(along, E.z0, E.z1) || sign_change_roots(along, E.z0, E.z1, roots) == 0);
     });
     return ok;
 }
@@ -145,48 +149,58 @@ bool DomainMesh::arcs_nowhere_nearer(int F, const SourceRegion& reg, const Quadr
 // R's other half-planes. A straight arc crosses the line where its ends' signed distances say
 // (the rounding of that point is far below kRegionSlack); a curved one within its box's shadow.
 bool DomainMesh::lines_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g) {
-    for (const HalfPlane& hp : reg.planes) {
-        if (hp.kind != HalfPlane::Line) continue;
-        const double nn = norm(hp.n);
-        if (!(nn > 0)) return false;
-        const Vec2 u{-hp.n.y / nn, hp.n.x / nn}, o = hp.n * (hp.offset / (nn * nn));
-        const double tol = 1e-12 * nn;
-        double tmin = HUGE_VAL, tmax = -HUGE_VAL;
-        auto cover = [&](Vec2 p) {
-            const double t = dot(p - o, u);
-            tmin = std::min(tmin, t);
-            tmax = std::max(tmax, t);
-        };
-        for_each_half_edge(F, [&](int h) {
-            const Vec2 pa = vertices_[half_[h].origin].p, pb = vertices_[target(h)].p;
-            if (edges_[h >> 1].curve.straight()) {
+    // One pass over F's arcs for all of R's lines (at most 3).
+    const HalfPlane* line[3];
+    int nl = 0;
+    for (const HalfPlane& hp : reg.planes)
+        if (hp.kind == HalfPlane::Line) {
+            if (nl == 3) return false;
+            line[nl++] = &hp;
+        }
+    if (nl == 0) return true;
+    constexpr double tol = 1e-12;  // (unit normals)
+    double tmin[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, tmax[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    Vec2 u[3], o[3];
+    for (int j = 0; j < nl; ++j) u[j] = {-line[j]->n.y, line[j]->n.x}, o[j] = line[j]->n * line[j]->offset;
+    auto cover = [&](int j, Vec2 p) {
+        const double t = dot(p - o[j], u[j]);
+        tmin[j] = std::min(tmin[j], t);
+        tmax[j] = std::max(tmax[j], t);
+    };
+    for_each_half_edge(F, [&](int h) {
+        const Vec2 pa = vertices_[half_[h].origin].p, pb = vertices_[target(h)].p;
+        if (edges_[h >> 1].curve.straight()) {
+            for (int j = 0; j < nl; ++j) {
+                const HalfPlane& hp = *line[j];
                 const double ha = dot(hp.n, pa) - hp.offset, hb = dot(hp.n, pb) - hp.offset;
-                if ((ha > tol && hb > tol) || (ha < -tol && hb < -tol)) return;
-                if (std::fabs(ha) <= tol) cover(pa);
-                if (std::fabs(hb) <= tol) cover(pb);
-                if ((ha > tol && hb < -tol) || (ha < -tol && hb > tol)) cover(pa + (pb - pa) * (ha / (ha - hb)));
-                return;
+                if ((ha > tol && hb > tol) || (ha < -tol && hb < -tol)) continue;
+                if (std::fabs(ha) <= tol) cover(j, pa);
+                if (std::fabs(hb) <= tol) cover(j, pb);
+                if ((ha > tol && hb < -tol) || (ha < -tol && hb > tol)) cover(j, pa + (pb - pa) * (ha / (ha - hb)));
             }
-            Box2 ab = arc_geometry(h >> 1).bulge;
-            ab.add(pa); ab.add(pb);
-            const Vec2 corners[4] = {ab.lo, ab.hi, Vec2{ab.lo.x, ab.hi.y}, Vec2{ab.hi.x, ab.lo.y}};
+            return;
+        }
+        Box2 ab = arc_geometry(h >> 1).bulge;
+        ab.add(pa); ab.add(pb);
+        const Vec2 corners[4] = {ab.lo, ab.hi, Vec2{ab.lo.x, ab.hi.y}, Vec2{ab.hi.x, ab.lo.y}};
+        for (int j = 0; j < nl; ++j) {
             double lo = HUGE_VAL, hi = -HUGE_VAL;
             for (Vec2 c : corners) {
-                const double v = dot(hp.n, c) - hp.offset;
+                const double v = dot(line[j]->n, c) - line[j]->offset;
                 lo = std::min(lo, v), hi = std::max(hi, v);
             }
-            if (lo > tol || hi < -tol) return;
-            for (Vec2 c : corners) cover(c);
-        });
-        if (!(tmin <= tmax)) continue;  // the line misses F
-        double lo = tmin - kRegionSlack, hi = tmax + kRegionSlack;
+            if (lo > tol || hi < -tol) continue;
+            for (Vec2 c : corners) cover(j, c);
+        }
+    });
+    for (int j = 0; j < nl; ++j) {
+        if (!(tmin[j] <= tmax[j])) continue;  // the line misses F
+        double lo = tmin[j] - kRegionSlack, hi = tmax[j] + kRegionSlack;
         bool empty = false;
         for (const HalfPlane& other : reg.planes)
-            if (&other != &hp && !clip_param(other, o, u, lo, hi)) { empty = true; break; }
+            if (&other != line[j] && !clip_param(other, o[j], u[j], lo, hi)) { empty = true; break; }
         if (empty) continue;
-        RationalCurve line;
-        line.n0 = o; line.n1 = u;
-        if (!(max_on(line.compose(g), lo, hi) <= kNowhere)) return false;
+        if (!(max_along(g, o[j], u[j], lo, hi) <= kNowhere)) return false;
     }
     return true;
 }
