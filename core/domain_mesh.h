@@ -191,6 +191,10 @@ private:
     // from vertex va to vb (-1, -1 for a closed curve wholly inside).
     struct Chord { CurveComponent comp; double t0, t1; int va, vb; };
 
+    // A face's arcs as the tests of domain_reach.cpp read them (tmp_.face_arcs): ends, edge, and a
+    // curved arc's box (bulge included).
+    struct FaceArc { Vec2 a, b; int e; bool straight; Box2 box; };
+
     // Buffers reused across calls so the insertion does not allocate in its inner loops. Their
     // contents never outlive one call; a copy of the mesh starts with empty ones.
     struct Scratch {
@@ -208,6 +212,7 @@ private:
         std::vector<std::pair<double, int>> pts;
         std::vector<int> verts, es, wedge_cands;
         std::vector<CurveComponent::Piece> arc_pieces;
+        std::vector<FaceArc> face_arcs;
         Scratch() = default;
         Scratch(const Scratch&) {}
         Scratch& operator=(const Scratch&) { return *this; }
@@ -247,8 +252,9 @@ private:
     // Without a listener (domain_reach.cpp): the regions that may be nearer on F, and the tests.
     void insert_where_nearer(int F, const SourceProjection& src, const RegionBoxes& boxes);
     bool region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox);
-    bool arcs_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g, const Box2& b);
-    bool lines_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g);
+    bool arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g, const Box2& b) const;
+    bool lines_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g) const;
+
     void cut_by_region(const SourceRegion& reg, const Listener* L);
     void apply_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
     void report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve);

@@ -67,8 +67,18 @@ void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const R
     const size_t R = src.regions.size();
     unsigned may_win = 0;
     bool passed_over = false;
+    tmp_.face_arcs.clear();  // F's arcs, read once for all its regions' tests
     for (size_t k = 0; k < R; ++k) {
         if (region_box_misses(cached_face_box(F), boxes, k)) continue;
+        if (tmp_.face_arcs.empty())
+            for_each_half_edge(F, [&](int h) {
+                FaceArc a{vertices_[half_[h].origin].p, vertices_[target(h)].p, h >> 1, edges_[h >> 1].curve.straight(), {}};
+                if (!a.straight) {
+                    a.box = arc_geometry(a.e).bulge;
+                    a.box.add(a.a), a.box.add(a.b);
+                }
+                tmp_.face_arcs.push_back(a);
+            });
         if (region_nowhere_nearer(F, src.regions[k], boxes.box[k])) { passed_over = true; continue; }
         may_win |= 1u << k;
     }
@@ -112,43 +122,40 @@ bool DomainMesh::region_nowhere_nearer(int F, const SourceRegion& reg, const Box
         for (const HalfPlane& hp : reg.planes) in_r = in_r && (hp.kind != HalfPlane::Line || dot(hp.n, x) >= hp.offset - kRegionSlack);
         if (in_r && !(g(x) <= kNowhere)) return false;
     }
-    return arcs_nowhere_nearer(F, reg, g, b) && lines_nowhere_nearer(F, reg, g);
+    return arcs_nowhere_nearer(reg, g, b) && lines_nowhere_nearer(reg, g);
 }
 
 // g <= kNowhere on F's arcs inside R: a straight arc clipped to R exactly, a curved one whole
 // (its box permitting).
-bool DomainMesh::arcs_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g, const Box2& b) {
-    bool ok = true;
-    for_each_half_edge(F, [&](int h) {
-        if (!ok) return;
-        const Edge& E = edges_[h >> 1];
-        const Vec2 pa = vertices_[half_[h].origin].p, pb = vertices_[target(h)].p;
-        if (E.curve.straight()) {
+bool DomainMesh::arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g, const Box2& b) const {
+    for (const FaceArc& arc : tmp_.face_arcs) {
+        const Vec2 pa = arc.a, pb = arc.b;
+        if (arc.straight) {
             double lo = 0, hi = 1;
-            for (const HalfPlane& hp : reg.planes)
-                if (!clip_param(hp, pa, pb - pa, lo, hi)) return;
-            ok = max_along(g, pa, pb - pa, lo, hi) <= kNowhere;
-            return;
+            bool in = true;
+            for (const HalfPlane& hp : reg.planes) in = in && clip_param(hp, pa, pb - pa, lo, hi);
+            if (in && !(max_along(g, pa, pb - pa, lo, hi) <= kNowhere)) return false;
+            continue;
         }
-        Box2 ab = arc_geometry(h >> 1).bulge;
-        ab.add(pa); ab.add(pb);
-        if (boxes_miss(ab, b)) return;
+        if (boxes_miss(arc.box, b)) continue;
         // The whole arc (a superset of its part inside R): g - kNowhere negative all along it,
         // by a bound if that suffices, else by its sign changes (none) and one value.
+        const Edge& E = edges_[arc.e];
         Quadratic2 shifted = g;
         shifted.f -= kNowhere;
         const Poly along = E.curve.compose(shifted);  // (g - kNowhere) w^2: the sign of g - kNowhere
         double roots[kMaxSignChangeRoots];
-        ok = along(0.5 * (E.z0 + E.z1)) < 0 && (one_sign_on(along, E.z0, E.z1) || sign_change_roots(along, E.z0, E.z1, roots) == 0);
-    });
-    return ok;
+        if (!(along(0.5 * (E.z0 + E.z1)) < 0 && (one_sign_on(along, E.z0, E.z1) || sign_change_roots(along, E.z0, E.z1, roots) == 0)))
+            return false;
+    }
+    return true;
 }
 
 // g < 0 on R's lines inside F: each line between its first and last crossing of F's boundary (a
 // superset of line ∩ F: F is bounded, so a line that meets it crosses its boundary), clipped to
 // R's other half-planes. A straight arc crosses the line where its ends' signed distances say
 // (the rounding of that point is far below kRegionSlack); a curved one within its box's shadow.
-bool DomainMesh::lines_nowhere_nearer(int F, const SourceRegion& reg, const Quadratic2& g) {
+bool DomainMesh::lines_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g) const {
     // One pass over F's arcs for all of R's lines (at most 3).
     const HalfPlane* line[3];
     int nl = 0;
@@ -167,9 +174,9 @@ bool DomainMesh::lines_nowhere_nearer(int F, const SourceRegion& reg, const Quad
         tmin[j] = std::min(tmin[j], t);
         tmax[j] = std::max(tmax[j], t);
     };
-    for_each_half_edge(F, [&](int h) {
-        const Vec2 pa = vertices_[half_[h].origin].p, pb = vertices_[target(h)].p;
-        if (edges_[h >> 1].curve.straight()) {
+    for (const FaceArc& arc : tmp_.face_arcs) {
+        const Vec2 pa = arc.a, pb = arc.b;
+        if (arc.straight) {
             for (int j = 0; j < nl; ++j) {
                 const HalfPlane& hp = *line[j];
                 const double ha = dot(hp.n, pa) - hp.offset, hb = dot(hp.n, pb) - hp.offset;
@@ -178,10 +185,9 @@ bool DomainMesh::lines_nowhere_nearer(int F, const SourceRegion& reg, const Quad
                 if (std::fabs(hb) <= tol) cover(j, pb);
                 if ((ha > tol && hb < -tol) || (ha < -tol && hb > tol)) cover(j, pa + (pb - pa) * (ha / (ha - hb)));
             }
-            return;
+            continue;
         }
-        Box2 ab = arc_geometry(h >> 1).bulge;
-        ab.add(pa); ab.add(pb);
+        const Box2& ab = arc.box;
         const Vec2 corners[4] = {ab.lo, ab.hi, Vec2{ab.lo.x, ab.hi.y}, Vec2{ab.hi.x, ab.lo.y}};
         for (int j = 0; j < nl; ++j) {
             double lo = HUGE_VAL, hi = -HUGE_VAL;
@@ -192,7 +198,7 @@ bool DomainMesh::lines_nowhere_nearer(int F, const SourceRegion& reg, const Quad
             if (lo > tol || hi < -tol) continue;
             for (Vec2 c : corners) cover(j, c);
         }
-    });
+    }
     for (int j = 0; j < nl; ++j) {
         if (!(tmin[j] <= tmax[j])) continue;  // the line misses F
         double lo = tmin[j] - kRegionSlack, hi = tmax[j] + kRegionSlack;

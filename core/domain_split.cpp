@@ -359,12 +359,14 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
 void DomainMesh::classify_by_side(SplitCall& s) {
     const Quadratic2& g = s.g;
     const std::vector<int>& hes = tmp_.hes;
+    const bool linear = g.is_linear();  // then its gradient is the same everywhere
+    const Vec2 grad_linear = g.gradient({0, 0});
     for (int h : hes) {
         Vec2 p = vertices_[half_[h].origin].p;
         const double gp = std::fabs(g(p));
         if (gp <= kZero) { s.mark_zero(half_[h].origin); continue; }
         // Far from the curve by a bound of |grad g| (the norm is at most |gx| + |gy|): no root needed.
-        const Vec2 gr = g.gradient(p);
+        const Vec2 gr = linear ? grad_linear : g.gradient(p);
         if (gp > kZero + kOnCurve * ((std::fabs(gr.x) + std::fabs(gr.y)) * (1 + 1e-12))) continue;
         if (gp <= kZero + kOnCurve * norm(gr)) s.mark_zero(half_[h].origin);
     }
@@ -376,7 +378,7 @@ void DomainMesh::classify_by_side(SplitCall& s) {
     for (int h : hes) {
         const Edge& E = edges_[h >> 1];
         Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
-        const Vec2 gr = g.gradient(m);
+        const Vec2 gr = linear ? grad_linear : g.gradient(m);
         tmp_.side_val[h] = g(m);
         tmp_.side_n2[h] = dot(gr, gr);  // norm(gr) is sqrt of exactly this
         tmp_.he_mark[h] = s.sided;

@@ -116,6 +116,10 @@ void sure_sides(const Poly& p, double a, double b, double fa, double& x1, double
 // evaluating p at every midpoint; the midpoints whose sign is certain are decided without the
 // evaluation: far from the root the steps no longer wait for p.
 double bisect_root(const Poly& p, double a, double b, double fa) {
+    if (p.deg == 1 && p.c[1] != 0) {  // a line: its root, to the rounding of one division
+        const double r = -p.c[0] / p.c[1];
+        if (r > a && r < b) return r;
+    }
     double x1, x2;
     sure_sides(p, a, b, fa, x1, x2);
     // Both sides proved: the root lies in [x1, x2], an interval as narrow as the evaluation's

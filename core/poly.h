@@ -38,7 +38,8 @@ std::vector<double> sign_change_roots(const Poly& p, double lo, double hi);
 constexpr int kMaxSignChangeRoots = 16;  // > 2 deg - 1, the most the recursion can report
 int sign_change_roots(const Poly& p, double lo, double hi, double (&out)[kMaxSignChangeRoots]);
 
-// The root of p in [a, b], given fa = p(a) and p(b) of opposite signs. Where p is monotone there
+// The root of p in [a, b], given fa = p(a) and p(b) of opposite signs. A line's by one division;
+// where p is monotone there
 // with a slope that makes the root's position certain to within the evaluation's rounding (most
 // calls), the middle of that proved bracket; otherwise by bisection: the midpoint where p
 // evaluates to exactly 0, or the last midpoint once the interval cannot shrink, with the

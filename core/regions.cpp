@@ -131,7 +131,23 @@ struct Projector {
 
 SourceProjection project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t index) {
     SourceProjection out;
+    project_source(F, s, index, out);
+    return out;
+}
+
+void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t index, SourceProjection& out) {
+    // Region k is written over out.regions[k], reusing its storage (the solver projects one source
+    // per insertion into the same object: no allocation once it has held seven regions).
+    size_t count = 0;
+    auto add = [&](Region kind, std::initializer_list<HalfPlane> planes, const Quadratic2& poly) {
+        if (out.regions.size() <= count) out.regions.emplace_back();
+        SourceRegion& r = out.regions[count++];
+        r.kind = kind;
+        r.planes.assign(planes);
+        r.poly = poly;
+    };
     out.source = index;
+    out.degenerate = false;
     double reach = 0;
     for (const Vec3& c : s) reach = std::max(reach, norm(c - F.origin) / F.scale);
     out.delta = 64 * 0x1p-52 * (1 + reach);
@@ -154,14 +170,16 @@ SourceProjection project_source(const TargetFrame& F, const std::array<Vec3, 3>&
         static const Region vreg[3] = {Region::a, Region::b, Region::c};
         static const Region ereg[3] = {Region::ab, Region::bc, Region::ca};
         if (best == 0) {
-            out.regions.push_back({Region::a, {}, P.vertex(a)});
-            return out;
+            add(Region::a, {}, P.vertex(a));
+            out.regions.resize(count);
+            return;
         }
         const Vec3 &p = s[i], &q = s[j];
-        out.regions.push_back({vreg[i], {P.halfspace(p, p - q)}, P.vertex(p)});
-        out.regions.push_back({vreg[j], {P.halfspace(q, q - p)}, P.vertex(q)});
-        out.regions.push_back({ereg[i], {P.halfspace(p, q - p), P.halfspace(q, p - q)}, P.edge(p, q)});
-        return out;
+        add(vreg[i], {P.halfspace(p, p - q)}, P.vertex(p));
+        add(vreg[j], {P.halfspace(q, q - p)}, P.vertex(q));
+        add(ereg[i], {P.halfspace(p, q - p), P.halfspace(q, p - q)}, P.edge(p, q));
+        out.regions.resize(count);
+        return;
     }
     // Outward in-plane normals of the edges.
     auto outward = [&](const Vec3& p, const Vec3& q, const Vec3& opp) {
@@ -170,14 +188,14 @@ SourceProjection project_source(const TargetFrame& F, const std::array<Vec3, 3>&
         return m;
     };
     Vec3 mab = outward(a, b, c), mbc = outward(b, c, a), mca = outward(c, a, b);
-    out.regions.push_back({Region::a, {P.halfspace(a, a - b), P.halfspace(a, a - c)}, P.vertex(a)});
-    out.regions.push_back({Region::b, {P.halfspace(b, b - a), P.halfspace(b, b - c)}, P.vertex(b)});
-    out.regions.push_back({Region::c, {P.halfspace(c, c - a), P.halfspace(c, c - b)}, P.vertex(c)});
-    out.regions.push_back({Region::ab, {P.halfspace(a, mab), P.halfspace(a, b - a), P.halfspace(b, a - b)}, P.edge(a, b)});
-    out.regions.push_back({Region::bc, {P.halfspace(b, mbc), P.halfspace(b, c - b), P.halfspace(c, b - c)}, P.edge(b, c)});
-    out.regions.push_back({Region::ca, {P.halfspace(c, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a)});
-    out.regions.push_back({Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(a, n)});
-    return out;
+    add(Region::a, {P.halfspace(a, a - b), P.halfspace(a, a - c)}, P.vertex(a));
+    add(Region::b, {P.halfspace(b, b - a), P.halfspace(b, b - c)}, P.vertex(b));
+    add(Region::c, {P.halfspace(c, c - a), P.halfspace(c, c - b)}, P.vertex(c));
+    add(Region::ab, {P.halfspace(a, mab), P.halfspace(a, b - a), P.halfspace(b, a - b)}, P.edge(a, b));
+    add(Region::bc, {P.halfspace(b, mbc), P.halfspace(b, c - b), P.halfspace(c, b - c)}, P.edge(b, c));
+    add(Region::ca, {P.halfspace(c, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a));
+    add(Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(a, n));
+    out.regions.resize(count);
 }
 
 double source_distance2(const TargetFrame& F, const std::array<Vec3, 3>& s, Vec2 p) {

@@ -56,6 +56,8 @@ struct SourceProjection {
     double delta = 0;
 };
 SourceProjection project_source(const TargetFrame& frame, const std::array<Vec3, 3>& source, uint32_t index);
+// The same into `out`, reusing its storage.
+void project_source(const TargetFrame& frame, const std::array<Vec3, 3>& source, uint32_t index, SourceProjection& out);
 
 // The squared distance, in frame units, from the target point p to the source triangle, computed
 // directly in 3D (the independent value every candidate is evaluated with).

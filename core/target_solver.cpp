@@ -215,7 +215,8 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
                     if (watching()) voxel_log_.push_back({v, 1});
                 }
         // Sources of this voxel, nearest (by bounding boxes) last so pop_back takes it first.
-        std::vector<std::pair<double, uint32_t>> found;
+        std::vector<std::pair<double, uint32_t>>& found = found_;
+        found.clear();
         for (const uint32_t* it = g.begin(top.voxel); it != g.end(top.voxel); ++it)
             if (seen_->sources().insert(*it)) found.push_back({box_distance2(tbox, g.mesh().triangle_bounds(*it)), *it});
         std::sort(found.begin(), found.end(), [](auto& a, auto& b) { return a.first > b.first || (a.first == b.first && a.second > b.second); });
@@ -232,7 +233,8 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
         emit(e);
     }
     std::array<Vec3, 3> sc = source_corners(s);
-    SourceProjection proj = project_source(frame_, sc, s);
+    SourceProjection& proj = projection_;
+    project_source(frame_, sc, s, proj);
     inserted_.push_back(s);
     for (const Vec3& c : sc) source_extent_ = std::max(source_extent_, norm(c - frame_.origin));
     if (!mesh_) { degenerate_maximum(); return; }

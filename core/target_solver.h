@@ -176,6 +176,8 @@ private:
     double stop_below_ = -1;
     bool stopped_early_ = false;
     std::vector<Candidate> candidates_;
+    SourceProjection projection_;     // the source being inserted (its storage reused)
+    std::vector<std::pair<double, uint32_t>> found_;  // a visited voxel's new sources (storage reused)
 };
 
 }  // namespace hlens
