@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 
 namespace hlens {
 
@@ -34,6 +35,8 @@ bool DomainMesh::region_box_inside(const Box2& b, const SourceRegion& reg) {
 // ---------------------------------------------------------------- inserting a source
 
 bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listener* L) {
+    std::optional<PlainBisection> plain;  // watched: the paper's insertion, its roots to the bit
+    if (L) plain.emplace();
     // Merging looks only at edges beside a face this insertion touched: the others' neighbours
     // were unequal after the last merging, unless the tie rule's allowance has grown.
     const uint64_t since = src.delta > delta_ ? 0 : clock_;

@@ -115,8 +115,16 @@ void sure_sides(const Poly& p, double a, double b, double fa, double& x1, double
 // both sides of a narrow bracket, its middle; otherwise by bisection, whose result is that of
 // evaluating p at every midpoint; the midpoints whose sign is certain are decided without the
 // evaluation: far from the root the steps no longer wait for p.
+namespace {
+thread_local int plain_bisection = 0;  // PlainBisection scopes alive on this thread
+}  // namespace
+
+PlainBisection::PlainBisection() { ++plain_bisection; }
+PlainBisection::~PlainBisection() { --plain_bisection; }
+
 double bisect_root(const Poly& p, double a, double b, double fa) {
-    if (p.deg == 1 && p.c[1] != 0) {  // a line: its root, to the rounding of one division
+    const bool short_cuts = plain_bisection == 0;
+    if (short_cuts && p.deg == 1 && p.c[1] != 0) {  // a line: its root, to the rounding of one division
         const double r = -p.c[0] / p.c[1];
         if (r > a && r < b) return r;
     }
@@ -124,7 +132,7 @@ double bisect_root(const Poly& p, double a, double b, double fa) {
     sure_sides(p, a, b, fa, x1, x2);
     // Both sides proved: the root lies in [x1, x2], an interval as narrow as the evaluation's
     // noise allows, where bisection could only follow the rounding's signs. Its middle will do.
-    if (x1 > a && x2 < b) return 0.5 * (x1 + x2);
+    if (short_cuts && x1 > a && x2 < b) return 0.5 * (x1 + x2);
     int it = 0;
     // While the midpoints fall where the sign is certain, the steps are a chain of additions and
     // comparisons; the choice of half is made without a branch (it is as unpredictable as the

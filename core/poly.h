@@ -46,6 +46,17 @@ int sign_change_roots(const Poly& p, double lo, double hi, double (&out)[kMaxSig
 // evaluations whose sign is certain skipped.
 double bisect_root(const Poly& p, double a, double b, double fa);
 
+// While one of these lives, bisect_root on this thread always bisects (no short cut): the roots,
+// and so every vertex of a domain mesh, are those of the plain bisection to the bit. The paper's
+// insertion takes one while someone watches its events (the debugger, `trace`), so that its event
+// stream does not move with the short cuts.
+struct PlainBisection {
+    PlainBisection();
+    ~PlainBisection();
+    PlainBisection(const PlainBisection&) = delete;
+    PlainBisection& operator=(const PlainBisection&) = delete;
+};
+
 // True if sign_change_roots(p, lo, hi) certainly finds nothing, by a cheap test (the two ends of a
 // line, one_sign_on otherwise); false when unsure.
 bool no_sign_change(const Poly& p, double lo, double hi);

@@ -136,6 +136,10 @@ TEST(Poly, BisectionAgreesWithThePlainOneToTheEvaluationsNoise) {
         ASSERT_LE(got, b) << "trial " << trial;
         ASSERT_LE(std::fabs(got - want), tol) << "trial " << trial << ": " << want << " vs " << got;
         exact += same_bits(want, got);
+        {
+            PlainBisection plain;  // the debugger's mode: plain bisection's root, bit for bit
+            ASSERT_TRUE(same_bits(want, bisect_root(p, a, b, fa))) << "trial " << trial;
+        }
         ++compared;
     }
     EXPECT_GT(compared, 3000);
