@@ -328,9 +328,14 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
     // vertex (off the curve by more than kOnCurve) is not on it either, and the split would miss
     // the sliver between them (a face kept whole across a region line). Such a vertex is on the
     // curve, as far as this split can tell.
+    // (g has coefficients of at most 1 and T' lies in [0, 1]^2, so |grad g| < 9 there; with the
+    // ends within 1e-7 the two values differ by less than 1e-6, and a vertex where |g| > 1e-5 is on
+    // the side of the arc's end.)
     for (int end = 0; end < 2; ++end) {
         const int v = half_[2 * e + end].origin;
-        const double gv = g(vertices_[v].p), ge = along(end ? edges_[e].z1 : edges_[e].z0);
+        const double gv = g(vertices_[v].p);
+        if (!(std::fabs(gv) <= 1e-5)) continue;
+        const double ge = along(end ? edges_[e].z1 : edges_[e].z0);
         if ((gv > 0 && ge < 0) || (gv < 0 && ge > 0)) s.mark_zero(v);
     }
     if (no_sign_change(along, edges_[e].z0, edges_[e].z1)) return;  // most arcs: nothing to find
