@@ -70,30 +70,14 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
 // lies inside it (the region is convex) needs none either. The clipped regions' boxes are the same
 // for every face, so they are taken once.
 void DomainMesh::clip_regions_to_target(const SourceProjection& src, RegionBoxes& out) {
-    // T' is its three corners (vertices 0-2, counter-clockwise; the points its boundary gained
-    // since lie between them). Clipped by at most three half-planes it keeps at most six corners.
+    // T' is its three corners (vertices 0-2, counter-clockwise): the points its boundary gained
+    // since lie between them.
     for (size_t k = 0; k < src.regions.size(); ++k) {
-        Vec2 buf[2][12];
-        int n = 3, cur = 0;
-        for (int i = 0; i < 3; ++i) buf[0][i] = vertices_[i].p;
-        for (const HalfPlane& h : src.regions[k].planes) {
-            if (h.kind == HalfPlane::All) continue;
-            if (h.kind == HalfPlane::None || n + 1 > 11) { n = 0; break; }
-            const Vec2* in = buf[cur];
-            Vec2* o = buf[cur ^ 1];
-            int m = 0;
-            for (int i = 0; i < n; ++i) {
-                const Vec2 p = in[i], q = in[i + 1 < n ? i + 1 : 0];
-                const double fp = dot(h.n, p) - h.offset, fq = dot(h.n, q) - h.offset;
-                if (fp >= 0) o[m++] = p;
-                if ((fp >= 0) != (fq >= 0)) o[m++] = p + (fp / (fp - fq)) * (q - p);
-            }
-            n = m;
-            cur ^= 1;
-            if (n == 0) break;
-        }
-        out.empty[k] = n == 0;
-        for (int i = 0; i < n; ++i) out.box[k].add(buf[cur][i]);
+        std::vector<Vec2>& P = tmp_.clipped;
+        P.assign({vertices_[0].p, vertices_[1].p, vertices_[2].p});
+        clip_convex_in_place(P, src.regions[k].planes, tmp_.clip_tmp);
+        out.empty[k] = P.empty();
+        for (Vec2 p : P) out.box[k].add(p);
     }
 }
 
@@ -153,13 +137,8 @@ void DomainMesh::cut_by_region(const SourceRegion& reg, const Listener* L) {
 // Face P lies in region `reg`: where the source is nearer (the conic's positive side), d^2 becomes
 // the region's quadratic.
 void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L) {
-    DomainLabel lab{(int32_t)src.source, reg.kind};
     if (faces_[P].infinite) {
-        DomainLabel old = faces_[P].label;
-        faces_[P].poly = reg.poly; faces_[P].label = lab; faces_[P].infinite = false;
-        ++relabels_;
-        touch_face(P);
-        if (L && L->on_relabel) L->on_relabel(P, old, lab);
+        give_to_region(P, src, reg, L);
         return;
     }
     if (same_quadratic(faces_[P].poly, reg.poly, delta_)) return;  // the existing domain keeps it (a tie)
@@ -168,13 +147,19 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
     split_face_into(P, Q, pieces);
     report_split(L, P, pieces, Q);
     for (const SplitPiece& pc : pieces)
-        if (pc.sign > 0) {
-            DomainLabel old = faces_[pc.face].label;
-            faces_[pc.face].poly = reg.poly; faces_[pc.face].label = lab;
-            ++relabels_;
-            touch_face(pc.face);
-            if (L && L->on_relabel) L->on_relabel(pc.face, old, lab);
-        }
+        if (pc.sign > 0) give_to_region(pc.face, src, reg, L);
+}
+
+// Face P takes the region's quadratic and label (counted and stamped: insert asks whether
+// anything changed, merging which faces did).
+void DomainMesh::give_to_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L) {
+    const DomainLabel old = faces_[P].label, lab{(int32_t)src.source, reg.kind};
+    faces_[P].poly = reg.poly;
+    faces_[P].label = lab;
+    faces_[P].infinite = false;
+    ++relabels_;
+    touch_face(P);
+    if (L && L->on_relabel) L->on_relabel(P, old, lab);
 }
 
 // The debugger's view of a split: the pieces' ids (built only when someone listens).

@@ -208,6 +208,7 @@ private:
         std::vector<double> areas, vval;
         std::vector<int> degree, any_out;
         ConicDecomposition dec;
+        std::vector<Vec2> clipped, clip_tmp;
         std::vector<Chord> chords, cand;
         std::vector<std::pair<double, int>> pts;
         std::vector<int> verts, es, wedge_cands;
@@ -257,6 +258,7 @@ private:
 
     void cut_by_region(const SourceRegion& reg, const Listener* L);
     void apply_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
+    void give_to_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
     void report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve);
 
     int add_vertex(Vec2 p);

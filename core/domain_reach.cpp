@@ -6,9 +6,9 @@
 // pieces where the source was not nearer back into one domain. On real pairs most of those cuts
 // are undone: on a coarse target among fine sources, 61% of insertions change nothing and half of
 // the regions that reach a domain win none of it. Here a region is cut into a domain only if it
-// may be nearer somewhere on it, decided without cutting (region_nowhere_nearer): q_F - q_R < 0
-// on F ∩ R is checked where its maximum can be, on supersets of those places, so a "nowhere" is
-// certain and the pieces it saves are exactly those the merging would have joined again.
+// may be nearer somewhere on it, decided without cutting (region_nowhere_nearer): q_F - q_R <= 0
+// (up to kNowhere) on F ∩ R is checked where its maximum can be, on supersets of those places, so
+// a "nowhere" is certain and the pieces it saves are those the merging would have joined again.
 //
 // The result is the same function d^2 := min(d^2, d_T^2) on the same domains, with fewer spurious
 // vertices left on curved arcs (tests: Lean.*, which compare it with the paper's insertion). The
@@ -97,7 +97,7 @@ void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const R
 }
 
 // True if region R of the source is nowhere nearer than face F's domain on F ∩ R: g = q_F - q_R
-// < 0 there (by split_face's margin), so the paper's insertion would give no piece of F to R. A
+// <= kNowhere there, so the paper's insertion would give no piece of F to R but rounding noise. A
 // quadratic that is not strictly concave takes its maximum over a compact set on the set's
 // boundary, which lies on F's arcs inside R and on R's lines inside F; a strictly concave one may
 // also take it at its centre. Each is checked on a superset (a curved arc whole, a line between
@@ -151,7 +151,7 @@ bool DomainMesh::arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& 
     return true;
 }
 
-// g < 0 on R's lines inside F: each line between its first and last crossing of F's boundary (a
+// g <= kNowhere on R's lines inside F: each line between its first and last crossing of F's boundary (a
 // superset of line ∩ F: F is bounded, so a line that meets it crosses its boundary), clipped to
 // R's other half-planes. A straight arc crosses the line where its ends' signed distances say
 // (the rounding of that point is far below kRegionSlack); a curved one within its box's shadow.

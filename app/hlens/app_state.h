@@ -80,6 +80,7 @@ struct Requests {
 struct ViewRect {
     float x = 0, y = 0, w = 1, h = 1;
     bool contains(float px, float py) const { return px >= x && py >= y && px < x + w && py < y + h; }
+    bool operator==(const ViewRect& o) const { return x == o.x && y == o.y && w == o.w && h == o.h; }
 };
 
 struct AppState {

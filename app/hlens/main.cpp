@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
         // ---- 4. Begin the frame; headless, scripted input replaces the mouse and keys
         begin_frame(window);
         //      (it starts once the distances are in and the 3D tile kept its place for a frame)
-        const bool settled = s.view.x == last_view.x && s.view.y == last_view.y && s.view.w == last_view.w && s.view.h == last_view.h;
+        const bool settled = s.view == last_view;
         last_view = s.view;
         feed_script(script, s.headless, jobs.compute_done && start.target_applied && (settled || script.pos > 0), jobs.trace.running());
         new_frame(window, s);

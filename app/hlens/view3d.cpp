@@ -8,7 +8,6 @@
 #include <imgui.h>
 
 #include "colormap.h"
-#include "exact_map.h"
 #include "gl.h"
 #include "panels.h"
 #include "ui.h"
