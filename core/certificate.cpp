@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cascade.h"
+#include "confirm_top.h"
 #include "point_triangle.h"
 #include "target_solver.h"
 
@@ -75,13 +76,25 @@ double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const 
     return std::max(0.0, std::min(r.distance, d_witness - tab.slack[r.target] - 16 * 0x1p-52 * (box.diagonal() + d_witness)));
 }
 
-// upper: the domain meshes' maximum, widened by a bound on the rounding of coordinates.
-double upper_end(const TargetTable& tab, size_t n, double distance, double coord, const Box3& box) {
+// upper: what the confirmation of the top left (confirm_top.cpp: a bound without the domain
+// meshes, over every target that can reach the result), and the sliver pieces' values with their
+// slack. Over closed targets its rounding is relative to the targets' sizes and the distances, not
+// to the coordinates.
+// Targets left open (not closed within the subdivision's budget) keep the domain meshes' maximum,
+// widened by a bound on the rounding of coordinates, as a cancelled run has it.
+double upper_end(const TargetTable& tab, const TopConfirmation& top, double distance, double coord, const Box3& box) {
+    double upper = std::max({distance, tab.piece_upper, top.upper});
+    if (top.open_upper >= 0) upper = std::max(upper, top.open_upper + 1e-13 * (coord + box.diagonal()) + 1e-12 * top.open_upper);
+    return upper * (1 + 1e-15);
+}
+
+// A cancelled run has no confirmation: the domain meshes' maximum, widened by a bound on the
+// rounding of coordinates.
+double cancelled_upper_end(const TargetTable& tab, size_t n, double distance, double coord, const Box3& box) {
     double upper = std::max(distance, tab.piece_upper);
     for (size_t t = 0; t < n; ++t)  // a sliver target's value may be short by its height
         if (tab.slack[t] > 0 && tab.value_sq[t] >= 0) upper = std::max(upper, std::sqrt(tab.value_sq[t]) + tab.slack[t]);
-    upper += 1e-13 * (coord + box.diagonal()) + 1e-12 * distance;
-    return upper;
+    return upper + 1e-13 * (coord + box.diagonal()) + 1e-12 * distance;
 }
 
 }  // namespace
@@ -96,10 +109,36 @@ void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode,
     r.distance = std::sqrt(best);
     Box3 box = A.bounds();
     box.add(B.bounds());
+    const double coord = coordinate_magnitude(A, B);
+    if (r.cancelled) {
+        r.lower = lower_end(grid, side, tab, box, r);
+        r.upper = cancelled_upper_end(tab, n, r.distance, coord, box);
+        return;
+    }
+    // The top, confirmed without the domain meshes to 1e-10 of the diagonal (the interval's goal
+    // is 1e-9); where it finds a point farther than the domain meshes did, that point is the witness.
+    const TopConfirmation top = confirm_top(grid, side, tab, r.distance, 1e-10 * box.diagonal());
     r.lower = lower_end(grid, side, tab, box, r);
-    r.upper = upper_end(tab, n, r.distance, coordinate_magnitude(A, B), box);
+    Vec3 origin = top.origin, offset = top.offset;
+    double polished;
+    bool raised = top.raised;
+    if (!raised) raised = polish_witness(grid, side, r.target, r.from_point, r.distance, origin, offset, polished);
+    if (raised) {
+        Vec3 to_point;
+        const double d = witness_distance(grid.of(1 - side), origin, offset, to_point);
+        const double lower = d - 16 * 0x1p-52 * (box.diagonal() + d);
+        if (lower > r.lower) {
+            if (top.raised) r.target = top.target;
+            r.distance = d;
+            r.lower = std::min(d, lower);
+            r.from_point = origin + offset;
+            r.to_point = to_point;
+        }
+    }
+    r.upper = upper_end(tab, top, r.distance, coord, box);
     // A one-sided distance is never below its farthest vertex's distance.
-    if (!r.cancelled && !(r.upper >= std::sqrt(tab.vertex_sq)))
+    // (The vertices' distances were taken in world coordinates: rounding of their magnitude.)
+    if (!(r.upper + 1e-13 * coord >= std::sqrt(tab.vertex_sq)))
         throw std::logic_error("internal error: one-sided distance " + format_g17(r.distance) + " (upper " +
                                format_g17(r.upper) + ") is below the farthest vertex distance " +
                                format_g17(std::sqrt(tab.vertex_sq)) + " (" + mode_name(mode) + " mode)");

@@ -70,6 +70,9 @@ OneSidedResult one_sided(const VoxelGrid& grid, int side, const HausdorffOptions
     if (!r.cancelled && n > 0 && std::none_of(tab.value_sq.begin(), tab.value_sq.end(), [](double v) { return v >= 0; }))
         solve_in_bound_order(grid, side, tab);
     certify(grid, side, tab, opt.mode, r);
+    // The witness's target holds the result, also where the certificate found it farther than
+    // the target's domain mesh did (confirm_top.cpp).
+    if (r.target < tab.bound.size() && r.distance > tab.bound[r.target]) tab.bound[r.target] = r.distance;
     r.target_max = std::move(tab.bound);
     r.target_exact = std::move(tab.exact);
     r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();

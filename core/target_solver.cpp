@@ -85,6 +85,10 @@ TargetSolver::~TargetSolver() = default;
 TargetSolver& TargetSolver::on_event(std::function<void(const Event&)> cb) { callbacks_.push_back(std::move(cb)); return *this; }
 TargetSolver& TargetSolver::record_events(bool on) { recording_ = on; return *this; }
 TargetSolver& TargetSolver::stop_below(double b) { stop_below_ = b; return *this; }
+TargetSolver& TargetSolver::nearest_first(bool on) {
+    if (phase_ == Phase::Begin) nearest_first_ = on;
+    return *this;
+}
 TargetSolver& TargetSolver::validate_each_insertion(bool on, bool thorough) {
     validate_each_ = on;
     validate_thorough_ = thorough;
@@ -162,7 +166,24 @@ void TargetSolver::begin() {
     phase_ = Phase::NextSource;
 }
 
+// The 26 neighbours of a visited voxel not seen yet join the queue by their distance.
+void TargetSolver::queue_neighbours(size_t voxel) {
+    const MeshGrid& g = grid_.of(1 - side_);
+    const auto c = g.coords(voxel);
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                int i = c[0] + dx, j = c[1] + dy, k = c[2] + dz;
+                if (i < 0 || j < 0 || k < 0 || i >= g.nx || j >= g.ny || k >= g.nz) continue;
+                size_t v = g.index(i, j, k);
+                if (!seen_->voxels().insert(v)) continue;
+                queue_.push({voxel_distance2(v), v});
+                if (watching()) voxel_log_.push_back({v, 1});
+            }
+}
+
 bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
+    if (nearest_first_) return next_nearest_source(s, dist, voxel);
     // Radius test with a relative margin: rounding must never cull a voxel that could matter.
     auto beyond = [&](double d2) { return d2 > max_sq_ * (1 + 1e-9) + 1e-300; };
     const Box3& tbox = box_;
@@ -202,18 +223,7 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
             voxel_log_.push_back({top.voxel, 2});
         }
         const MeshGrid& g = grid_.of(1 - side_);
-        auto c = g.coords(top.voxel);
-        for (int dz = -1; dz <= 1; ++dz)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    int i = c[0] + dx, j = c[1] + dy, k = c[2] + dz;
-                    if (i < 0 || j < 0 || k < 0 || i >= g.nx || j >= g.ny || k >= g.nz) continue;
-                    size_t v = g.index(i, j, k);
-                    if (!seen_->voxels().insert(v)) continue;
-                    double d2 = voxel_distance2(v);
-                    queue_.push({d2, v});
-                    if (watching()) voxel_log_.push_back({v, 1});
-                }
+        queue_neighbours(top.voxel);
         // Sources of this voxel, nearest (by bounding boxes) last so pop_back takes it first.
         std::vector<std::pair<double, uint32_t>>& found = found_;
         found.clear();
@@ -223,6 +233,44 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
         for (auto& f : found) { pending_sources_.push_back(f.second); pending_dist_.push_back(f.first); }
         pending_voxel_ = top.voxel;
         pending_voxel_dist_ = std::sqrt(top.d2);
+    }
+}
+
+// Run unwatched, the sources go in nearest first by their lower bound of distance to T' (ties, the
+// sources touching T', by distance to its centroid), not in voxel order: the same sources within
+// the search radius, but the domains of the nearest form first, and fewer insertions cut what a
+// later one would cut again. A found source waits in a heap until no voxel still to visit can hold
+// a nearer one. Stepped or watched, the paper's order (voxel by voxel) stays.
+bool TargetSolver::next_nearest_source(uint32_t& s, double& dist, size_t& voxel) {
+    auto beyond = [&](double d2) { return d2 > max_sq_ * (1 + 1e-9) + 1e-300; };
+    const MeshGrid& g = grid_.of(1 - side_);
+    for (;;) {
+        if (!near_.empty() && (queue_.empty() || near_.front().lb < queue_.top().d2)) {
+            std::pop_heap(near_.begin(), near_.end());
+            const Near n = near_.back();
+            near_.pop_back();
+            if (beyond(n.lb)) return false;  // the rest, and every voxel left, lie farther still
+            s = n.source;
+            dist = std::sqrt(n.lb);
+            voxel = n.voxel;
+            return true;
+        }
+        if (queue_.empty()) return false;
+        const QueueItem top = queue_.top();
+        if (beyond(top.d2)) return false;
+        queue_.pop();
+        queue_neighbours(top.voxel);
+        for (const uint32_t* it = g.begin(top.voxel); it != g.end(top.voxel); ++it) {
+            if (!seen_->sources().insert(*it)) continue;
+            double lb = box_distance2(box_, g.mesh().triangle_bounds(*it));
+            if (beyond(lb)) continue;  // the radius only shrinks: beyond for good
+            // Every point of T' is within `reach` of its centroid.
+            const auto sc = source_corners(*it);
+            const double dc = std::sqrt(closest_point_on_triangle(centroid_, sc[0], sc[1], sc[2]).dist2) - reach_;
+            if (dc > 0) lb = std::max(lb, dc * dc);
+            near_.push_back({lb, dc, *it, top.voxel});
+            std::push_heap(near_.begin(), near_.end());
+        }
     }
 }
 
@@ -470,6 +518,9 @@ std::unique_ptr<TargetSolver> TargetSolver::replay_to(const VoxelGrid& grid, int
 }
 
 void TargetSolver::run() {
+    // Run in one go with no one watching: the sources nearest first (next_nearest_source). Step by
+    // step, or watched, the paper's order.
+    if (phase_ == Phase::Begin && !watching()) nearest_first_ = true;
     while (step()) {}
 }
 

@@ -7,7 +7,9 @@
 //
 // Use it whole (`run()`), one insertion at a time (`step()`), or one event at a time
 // (`step_event()`), reading the state in between. Observers see every event as it happens; with
-// none attached, no event is even built.
+// none attached, no event is even built. `run()` with no observer visits the same sources in
+// another order: each source found waits until no unvisited voxel can hold a nearer one, and the
+// nearest goes in first (the same d^2 in the end, with fewer cuts to undo).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -83,6 +85,9 @@ public:
     // check of earlier versions, for the tests of configurations where the thorough one still
     // finds a known fault: README, "Known weaknesses").
     TargetSolver& validate_each_insertion(bool on = true, bool thorough = true);
+    // Step in run()'s unwatched order (nearest source first) instead of the paper's: for checking
+    // that order insertion by insertion. Before the first step.
+    TargetSolver& nearest_first(bool on = true);
 
     // Stepping back: a fresh solver for the same target, advanced to just after event `step`
     // (the construction is deterministic, so replaying from the start gives the same state).
@@ -90,7 +95,7 @@ public:
 
     bool step();                     // insert the next source; false once finished
     const Event* step_event();       // advance to the next event (nullptr once finished)
-    void run();
+    void run();                      // to the end; unwatched, nearest source first
     bool finished() const { return phase_ == Phase::Done; }
 
     // State, readable between steps.
@@ -133,6 +138,8 @@ private:
     bool watching() const { return !callbacks_.empty() || recording_; }
     void begin();
     bool next_source(uint32_t& s, double& dist, size_t& voxel);
+    bool next_nearest_source(uint32_t& s, double& dist, size_t& voxel);
+    void queue_neighbours(size_t voxel);
     void insert(uint32_t s, double dist, size_t voxel);
     void update_maximum();
     void finish();
@@ -177,6 +184,15 @@ private:
     bool stopped_early_ = false;
     std::vector<Candidate> candidates_;
     SourceProjection projection_;     // the source being inserted (its storage reused)
+    // run() unwatched: found sources by (lower bound of d^2, centroid distance less reach), a min-heap.
+    struct Near {
+        double lb, key;
+        uint32_t source;
+        size_t voxel;
+        bool operator<(const Near& o) const { return lb > o.lb || (lb == o.lb && (key > o.key || (key == o.key && source > o.source))); }
+    };
+    std::vector<Near> near_;
+    bool nearest_first_ = false;
     std::vector<std::pair<double, uint32_t>> found_;  // a visited voxel's new sources (storage reused)
 };
 

@@ -34,10 +34,12 @@ int pair_count() {
 
 // Known failures, left in the open (README, "Known weaknesses"; issue 8 stays open): pairs where a
 // cluster of region boundaries and conics near one point leaves a domain's polynomial slightly
-// wrong after some insertion (23, 77). validate() reports them; which seeds fail depends on the
-// insertion order. (155 passes since the two lines of a line pair are no longer merged into one
-// where they cross.) Any other failing seed fails the test.
-const int kKnownFailures[] = {23, 77};
+// wrong after some insertion (77, and 155: a zero-area source's edge region). validate() reports
+// them; which seeds fail depends on the insertion order: in the paper's (voxel) order 23 and 77
+// fail, in the nearest-first order the distance runs in (checked here) 77 and 155. On 1000 seeds,
+// 17 pairs fail in the paper's order and 21 in the nearest-first one, of the same kinds. Any other
+// failing seed fails the test.
+const int kKnownFailures[] = {77, 155};
 bool known_failure(int seed) { return std::find(std::begin(kKnownFailures), std::end(kKnownFailures), seed) != std::end(kKnownFailures); }
 
 std::vector<std::array<Vec3, 3>> inserted_corners(const TargetSolver& ts) {
@@ -77,6 +79,7 @@ TEST(Degenerate, DomainsAndLabelsHoldAfterEveryInsertion) {
         for (size_t t : {size_t(0), n / 2, n - 1}) {
             TargetSolver ts(grid, 0, (uint32_t)t);
             ts.validate_each_insertion(true);  // throws with the first failure
+            ts.nearest_first();                // the order the distance runs in (TargetSolver::run)
             const std::string where = "seed " + std::to_string(seed) + " (" + P.kind + ") target " + std::to_string(t);
             try {
                 while (failure.empty() && ts.step()) {

@@ -1,0 +1,35 @@
+// The certified interval's upper end, checked independently of the domain meshes: a branch and
+// bound over the targets whose value can reach the result (see confirm_top.cpp).
+#pragma once
+#include <cstdint>
+
+#include "vec.h"
+#include "voxel_grid.h"
+
+namespace hlens {
+
+struct TargetTable;
+
+struct TopConfirmation {
+    double upper = 0;          // the closed targets' bound: over them the distance is at most this
+    double open_upper = -1;    // the open targets' domain-mesh values (+ slivers' slack); -1: none
+    bool raised = false;       // a point farther than `best` was found: the witness below
+    uint32_t target = 0;       // its target,
+    Vec3 origin, offset;       // and the point origin + offset (origin: a corner of the target)
+    double value = 0;          // its distance to the other mesh, as computed here
+    size_t targets = 0, closed = 0, nodes = 0;  // targets looked at, closed, and sub-triangles
+};
+
+// `best`: the result the domain meshes give (the largest exact value). `tol`: a sub-triangle is
+// done once its bound is within tol of the largest distance measured, or its radius below tol; a
+// target is closed when all its sub-triangles are done within the node budget, else open.
+TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol);
+
+// A local search from the witness `point` (on target `target`, whose distance is `value`) for a
+// farther point nearby: a domain mesh's maximum at a corner of domains may sit ~1e-7 of the
+// target's size off. True (and the point origin + offset, its distance `polished`) if one is
+// farther by more than rounding.
+bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3& point, double value, Vec3& origin,
+                    Vec3& offset, double& polished);
+
+}  // namespace hlens
