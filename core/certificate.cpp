@@ -59,6 +59,14 @@ double choose_witness(const TargetTable& tab, size_t n, OneSidedResult& r) {
     return best;
 }
 
+// The rounding of an exactly computed witness distance d (16 ulps of the diagonal and d): lower
+// ends lie this far below it.
+double witness_rounding(double d, const Box3& box) { return 16 * 0x1p-52 * (box.diagonal() + d); }
+
+// The allowance for the rounding of coordinates where no confirmation covers a value `v`: 1e-13
+// of the coordinates' magnitude and the diagonal, and 1e-12 of v.
+double coordinate_allowance(double v, double coord, const Box3& box) { return 1e-13 * (coord + box.diagonal()) + 1e-12 * v; }
+
 // lower: the true distance from the witness to B, by exact point-triangle distances over the
 // whole of B, independently of the domain meshes, less their rounding (relative to the distances:
 // the witness is never formed in world coordinates, see witness_distance). Sets the witness points.
@@ -73,7 +81,7 @@ double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const 
     const double d_witness = witness_distance(grid.of(1 - side), frame.origin, offset, to_point);
     r.to_point = to_point;
     // (A sliver target's witness may lie off the sliver by up to its height, its slack.)
-    return std::max(0.0, std::min(r.distance, d_witness - tab.slack[r.target] - 16 * 0x1p-52 * (box.diagonal() + d_witness)));
+    return std::max(0.0, std::min(r.distance, d_witness - tab.slack[r.target] - witness_rounding(d_witness, box)));
 }
 
 // upper: what the confirmation of the top left (confirm_top.cpp: a bound without the domain
@@ -84,7 +92,7 @@ double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const 
 // widened by a bound on the rounding of coordinates, as a cancelled run has it.
 double upper_end(const TargetTable& tab, const TopConfirmation& top, double distance, double coord, const Box3& box) {
     double upper = std::max({distance, tab.piece_upper, top.upper});
-    if (top.open_upper >= 0) upper = std::max(upper, top.open_upper + 1e-13 * (coord + box.diagonal()) + 1e-12 * top.open_upper);
+    if (top.open_upper >= 0) upper = std::max(upper, top.open_upper + coordinate_allowance(top.open_upper, coord, box));
     return upper * (1 + 1e-15);
 }
 
@@ -94,7 +102,7 @@ double cancelled_upper_end(const TargetTable& tab, size_t n, double distance, do
     double upper = std::max(distance, tab.piece_upper);
     for (size_t t = 0; t < n; ++t)  // a sliver target's value may be short by its height
         if (tab.slack[t] > 0 && tab.value_sq[t] >= 0) upper = std::max(upper, std::sqrt(tab.value_sq[t]) + tab.slack[t]);
-    return upper + 1e-13 * (coord + box.diagonal()) + 1e-12 * distance;
+    return upper + coordinate_allowance(distance, coord, box);
 }
 
 }  // namespace
@@ -126,7 +134,7 @@ void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode,
     if (raised) {
         Vec3 to_point;
         const double d = witness_distance(grid.of(1 - side), origin, offset, to_point);
-        const double lower = d - 16 * 0x1p-52 * (box.diagonal() + d);
+        const double lower = d - witness_rounding(d, box);
         if (lower > r.lower) {
             if (top.raised) r.target = top.target;
             r.distance = d;

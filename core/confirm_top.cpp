@@ -67,6 +67,9 @@ double corner_bound(const std::array<Vec3, 3>& S, const Tri3& T) {
     return std::max({dist_rel(S[0], T), dist_rel(S[1], T), dist_rel(S[2], T)});
 }
 
+// The target's size: its longest edge.
+double longest_edge(const std::array<Vec3, 3>& c) { return std::max({norm(c[1] - c[0]), norm(c[2] - c[1]), norm(c[0] - c[2])}); }
+
 // The rounding of one such distance: a few ulps of the magnitudes involved, generously.
 double rounding(double size, double d, const Tri3& T) {
     const double m = std::max({norm(T[0]), norm(T[1]), norm(T[2])});
@@ -120,16 +123,14 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
     // The targets that can reach the result, highest first (they get the budget first).
     std::vector<uint32_t> order;
     for (uint32_t t = 0; t < A.num_triangles(); ++t) {
-        const auto c = A.corners(t);
-        const double size = std::max({norm(c[1] - c[0]), norm(c[2] - c[1]), norm(c[0] - c[2])});
-        if (!(tab.bound[t] + kReach * size + tab.slack[t] < L)) order.push_back(t);  // (a NaN bound too)
+        if (!(tab.bound[t] + kReach * longest_edge(A.corners(t)) + tab.slack[t] < L)) order.push_back(t);  // (a NaN bound too)
     }
     std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return tab.bound[x] > tab.bound[y]; });
     std::vector<Sub> stack;
     for (uint32_t t : order) {
         const auto c = A.corners(t);
-        const Target tg{c[0], c[1] - c[0], c[2] - c[0], std::max({norm(c[1] - c[0]), norm(c[2] - c[1]), norm(c[0] - c[2])})};
-        if (tab.bound[t] + kReach * tg.size + tab.slack[t] < L) continue;
+        const Target tg{c[0], c[1] - c[0], c[2] - c[0], longest_edge(c)};
+        if (tab.bound[t] + kReach * tg.size + tab.slack[t] < L) continue;  // L has risen since
         ++out.targets;
         const size_t budget = std::min(out.nodes + kPerTarget, kBudget);
         double target_upper = -HUGE_VAL;
@@ -202,8 +203,7 @@ bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3
     uv = {std::max(0.0, uv.x), std::max(0.0, uv.y)};
     if (uv.x + uv.y > 1) uv = uv / (uv.x + uv.y);
     uv = polish(grid.of(1 - side), tg, uv, kReach, polished);
-    const double size = std::max({norm(tg.e1), norm(tg.e2), norm(tg.e2 - tg.e1)});
-    if (!(polished > value + 256 * 0x1p-52 * (size + polished))) return false;
+    if (!(polished > value + 256 * 0x1p-52 * (longest_edge(c) + polished))) return false;
     origin = tg.o;
     offset = tg.at(uv);
     return true;

@@ -166,6 +166,19 @@ void TargetSolver::begin() {
     phase_ = Phase::NextSource;
 }
 
+// Radius test with a relative margin: rounding must never cull a voxel or source that could matter.
+bool TargetSolver::beyond(double d2) const { return d2 > max_sq_ * (1 + 1e-9) + 1e-300; }
+
+// A lower bound of d^2 from T' to source s, tighter than the boxes': every point of T' is within
+// `reach` of its centroid, so the source is at least |centroid - source| - reach away from all of
+// T'. That difference (negative for a source near the centroid) goes to `dc`.
+double TargetSolver::centroid_bound2(uint32_t s, double* dc) const {
+    const auto sc = source_corners(s);
+    const double d = std::sqrt(closest_point_on_triangle(centroid_, sc[0], sc[1], sc[2]).dist2) - reach_;
+    if (dc) *dc = d;
+    return d > 0 ? d * d : 0.0;
+}
+
 // The 26 neighbours of a visited voxel not seen yet join the queue by their distance.
 void TargetSolver::queue_neighbours(size_t voxel) {
     const MeshGrid& g = grid_.of(1 - side_);
@@ -184,8 +197,6 @@ void TargetSolver::queue_neighbours(size_t voxel) {
 
 bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
     if (nearest_first_) return next_nearest_source(s, dist, voxel);
-    // Radius test with a relative margin: rounding must never cull a voxel that could matter.
-    auto beyond = [&](double d2) { return d2 > max_sq_ * (1 + 1e-9) + 1e-300; };
     const Box3& tbox = box_;
     for (;;) {
         while (!pending_sources_.empty()) {
@@ -193,13 +204,7 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
             double d2 = pending_dist_.back();
             pending_sources_.pop_back();
             pending_dist_.pop_back();
-            if (!beyond(d2) && max_sq_ < HUGE_VAL) {
-                // Tighter than the boxes: every point of T' is within `reach` of its centroid, so
-                // the source is at least |centroid - source| - reach away from all of T'.
-                auto sc = source_corners(s);
-                double dc = std::sqrt(closest_point_on_triangle(centroid_, sc[0], sc[1], sc[2]).dist2) - reach_;
-                if (dc > 0) d2 = std::max(d2, dc * dc);
-            }
+            if (!beyond(d2) && max_sq_ < HUGE_VAL) d2 = std::max(d2, centroid_bound2(s));
             if (beyond(d2)) {
                 if (watching()) {
                     Event e = make_event(EventKind::SourceCulled);
@@ -242,7 +247,6 @@ bool TargetSolver::next_source(uint32_t& s, double& dist, size_t& voxel) {
 // later one would cut again. A found source waits in a heap until no voxel still to visit can hold
 // a nearer one. Stepped or watched, the paper's order (voxel by voxel) stays.
 bool TargetSolver::next_nearest_source(uint32_t& s, double& dist, size_t& voxel) {
-    auto beyond = [&](double d2) { return d2 > max_sq_ * (1 + 1e-9) + 1e-300; };
     const MeshGrid& g = grid_.of(1 - side_);
     for (;;) {
         if (!near_.empty() && (queue_.empty() || near_.front().lb < queue_.top().d2)) {
@@ -264,10 +268,8 @@ bool TargetSolver::next_nearest_source(uint32_t& s, double& dist, size_t& voxel)
             if (!seen_->sources().insert(*it)) continue;
             double lb = box_distance2(box_, g.mesh().triangle_bounds(*it));
             if (beyond(lb)) continue;  // the radius only shrinks: beyond for good
-            // Every point of T' is within `reach` of its centroid.
-            const auto sc = source_corners(*it);
-            const double dc = std::sqrt(closest_point_on_triangle(centroid_, sc[0], sc[1], sc[2]).dist2) - reach_;
-            if (dc > 0) lb = std::max(lb, dc * dc);
+            double dc;
+            lb = std::max(lb, centroid_bound2(*it, &dc));
             near_.push_back({lb, dc, *it, top.voxel});
             std::push_heap(near_.begin(), near_.end());
         }

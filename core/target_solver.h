@@ -140,6 +140,8 @@ private:
     bool next_source(uint32_t& s, double& dist, size_t& voxel);
     bool next_nearest_source(uint32_t& s, double& dist, size_t& voxel);
     void queue_neighbours(size_t voxel);
+    bool beyond(double d2) const;                          // farther than the search radius
+    double centroid_bound2(uint32_t s, double* dc = nullptr) const;
     void insert(uint32_t s, double dist, size_t voxel);
     void update_maximum();
     void finish();
