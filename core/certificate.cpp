@@ -125,12 +125,13 @@ void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode,
     }
     // The top, confirmed without the domain meshes to 1e-10 of the diagonal (the interval's goal
     // is 1e-9); where it finds a point farther than the domain meshes did, that point is the witness.
-    const TopConfirmation top = confirm_top(grid, side, tab, r.distance, 1e-10 * box.diagonal());
+    const double tol = 1e-10 * box.diagonal();
+    const TopConfirmation top = confirm_top(grid, side, tab, r.distance, tol);
     r.lower = lower_end(grid, side, tab, box, r);
     Vec3 origin = top.origin, offset = top.offset;
     double polished;
     bool raised = top.raised;
-    if (!raised) raised = polish_witness(grid, side, r.target, r.from_point, r.distance, origin, offset, polished);
+    if (!raised) raised = polish_witness(grid, side, r.target, r.from_point, r.distance, tol, origin, offset, polished);
     if (raised) {
         Vec3 to_point;
         const double d = witness_distance(grid.of(1 - side), origin, offset, to_point);

@@ -26,10 +26,10 @@ struct TopConfirmation {
 TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol);
 
 // A local search from the witness `point` (on target `target`, whose distance is `value`) for a
-// farther point nearby: a domain mesh's maximum at a corner of domains may sit ~1e-7 of the
-// target's size off. True (and the point origin + offset, its distance `polished`) if one is
-// farther by more than rounding.
-bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3& point, double value, Vec3& origin,
-                    Vec3& offset, double& polished);
+// farther point nearby (`tol`: confirm_top's): a domain mesh's maximum at a corner of domains may
+// sit ~1e-7 of the target's size off. True (and the point origin + offset, its distance
+// `polished`) if one is farther by more than rounding.
+bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3& point, double value, double tol,
+                    Vec3& origin, Vec3& offset, double& polished);
 
 }  // namespace hlens

@@ -8,7 +8,9 @@
 #include <random>
 
 #include <hlens/bounds.h>
+#include <hlens/cascade.h>
 #include <hlens/case_export.h>
+#include <hlens/confirm_top.h>
 #include <hlens/hausdorff.h>
 #include <hlens/mesh_io.h>
 #include <hlens/target_solver.h>
@@ -391,6 +393,61 @@ TEST(Driver, CertifiedIntervalHoldsWhereDomainsMeet) {
         EXPECT_LE(best, r.upper) << "a point farther than the certified upper end";
         EXPECT_LE(best - r.distance, 1e-13) << "the reported distance is short of a maximum next to it";
         EXPECT_LE(r.upper - r.lower, 1e-9 * (A.bounds().diagonal()));
+    }
+}
+
+// The confirmation of the top bounds a target over a crease and a coplanar seam of B without
+// splitting it down to the tolerance, and finds the maximum when the domain meshes fall short.
+// B is an asymmetric valley (slopes 0.3 and 0.7 about x = 0.5, each side two triangles); A one
+// tilted triangle reaching just past the crease. The table claims a maximum 1e-7 below the truth.
+// The referee: brute-force distances from 66 samples of A, climbed to their local maximum, with
+// every point taken relative to A's first corner (so that far from the origin it stays exact).
+TEST(ConfirmTop, ClosesOverCreasesAndFindsAMissedMaximum) {
+    for (double far : {0.0, 1e6}) {
+        SCOPED_TRACE("offset " + std::to_string(far));
+        const Vec3 off = Vec3{3, -2, 1} * far;
+        auto valley = [](double x) { return x < 0.5 ? 0.3 * (0.5 - x) : 0.7 * (x - 0.5); };
+        std::vector<Vec3> bp;
+        for (double x : {0.0, 0.5, 1.0})
+            for (double y : {0.0, 1.0}) bp.push_back(Vec3{x, y, valley(x)} + off);
+        const TriangleMesh B = mesh_of(bp, {{0, 2, 3}, {0, 3, 1}, {2, 4, 5}, {2, 5, 3}});
+        auto tilted = [](double x, double y) { return Vec3{x, y, 0.4 + 0.9 * (x - 0.5)}; };
+        const TriangleMesh A = mesh_of({tilted(0.2, 0.2) + off, tilted(0.51, 0.5) + off, tilted(0.2, 0.8) + off}, {{0, 1, 2}});
+        // The referee, relative to A's corner o.
+        const Vec3 o = A.positions[0];
+        TriangleMesh Bo = B;
+        for (Vec3& p : Bo.positions) p = p - o;
+        const Vec3 e1 = A.positions[1] - o, e2 = A.positions[2] - o;
+        double truth = 0, bu = 0, bv = 0;
+        for (int i = 0; i <= 10; ++i)
+            for (int j = 0; i + j <= 10; ++j) {
+                const double d = brute_distance((i / 10.0) * e1 + (j / 10.0) * e2, Bo);
+                if (d > truth) truth = d, bu = i / 10.0, bv = j / 10.0;
+            }
+        for (double h = 0.05; h > 1e-15; h *= 0.5)
+            for (bool moved = true; moved;) {
+                moved = false;
+                for (int dx = -1; dx <= 1; ++dx)
+                    for (int dy = -1; dy <= 1; ++dy) {
+                        const double u = bu + dx * h, v = bv + dy * h;
+                        if (u < 0 || v < 0 || u + v > 1) continue;
+                        const double d = brute_distance(u * e1 + v * e2, Bo);
+                        if (d > truth) truth = d, bu = u, bv = v, moved = true;
+                    }
+            }
+        VoxelGrid grid(A, B);
+        TargetTable tab;
+        tab.resize(1);
+        tab.bound[0] = truth - 1e-7;
+        const double diag = 1.5, tol = 1e-10 * diag;
+        const TopConfirmation top = confirm_top(grid, 0, tab, tab.bound[0], tol);
+        EXPECT_EQ(top.closed, top.targets);
+        EXPECT_EQ(top.closed, 1u);
+        EXPECT_LT(top.nodes, 2048u) << "the seams should not need splitting down to the tolerance";
+        EXPECT_GE(top.upper, truth);
+        EXPECT_LE(top.upper, truth + 2 * tol);
+        EXPECT_TRUE(top.raised);
+        EXPECT_NEAR(top.value, truth, 1e-13);
     }
 }
 
