@@ -235,8 +235,10 @@ private:
     void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out);
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);
+    bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
     void classify_by_side(SplitCall& s);
     void find_chords(SplitCall& s);
+    static void hyperbola_as_line_pair(const Quadratic2& g, ConicDecomposition& dec);
     void add_line_pair_centre(SplitCall& s);
     void add_chords_of_component(SplitCall& s, const CurveComponent& comp);
     void insert_chords(SplitCall& s);

@@ -338,6 +338,7 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
         const double ge = along(end ? edges_[e].z1 : edges_[e].z0);
         if ((gv > 0 && ge < 0) || (gv < 0 && ge > 0)) s.mark_zero(v);
     }
+    if (edges_[e].curve.straight() && split_at_touching_point(s, e, along)) return;
     if (no_sign_change(along, edges_[e].z0, edges_[e].z1)) return;  // most arcs: nothing to find
     const RationalCurve curve = edges_[e].curve;   // copies: split_edge may move edges_
     const Quadratic2 eq = edges_[e].equation;
@@ -358,6 +359,27 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
         s.mark_zero(v);
         cur = (int)edges_.size() - 1;
     }
+}
+
+// Where the centre of a line pair g = 0 lies on a straight arc (g along the arc has a double root
+// there, and g's gradient vanishes), the lines' pieces inside the face end there although g keeps
+// its sign along the arc: the point becomes a vertex on the curve. (A conic merely tangent to the
+// arc ends nowhere there.) (Degenerate seed 545: two sources' edge lines meeting on a domain's boundary, the line
+// pair's centre 1e-9 outside the face, and the whole face given to the farther source.) True if
+// it did (then the arc has no sign change to look for).
+bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along) {
+    const double A = along.c[2], B = along.c[1], C = along.c[0];  // along a straight arc, degree 2
+    if (A == 0 || along.c[3] != 0 || along.c[4] != 0) return false;
+    const double z = -B / (2 * A);
+    if (!(z > edges_[e].z0 && z < edges_[e].z1) || !(std::fabs(C - B * B / (4 * A)) <= kZero)) return false;
+    const Vec2 p = edges_[e].curve(z);
+    if (!(norm(s.g.gradient(p)) <= 1e-6)) return false;  // a tangent conic: nothing ends there
+    for (int end = 0; end < 2; ++end) {
+        const int v = half_[2 * e + end].origin;
+        if (norm(p - vertices_[v].p) <= kSnap) { s.mark_zero(v); ++stats_.snaps; return true; }
+    }
+    s.mark_zero(split_edge(e, z));
+    return true;
 }
 
 // 2. Classify vertices on the curve and boundary arcs by side (see SplitCall::side_value).
@@ -405,9 +427,28 @@ void DomainMesh::find_chords(SplitCall& s) {
     }
     ConicDecomposition& dec = tmp_.dec;
     decompose_conic(s.g, dec);
+    if (dec.type == ConicType::Hyperbola) hyperbola_as_line_pair(s.g, dec);
     if (dec.type == ConicType::LinePair && dec.components.size() == 2) add_line_pair_centre(s);
     s.line_like = dec.type == ConicType::Line || dec.type == ConicType::ParallelLines || dec.type == ConicType::LinePair;
     for (const CurveComponent& comp : dec.components) add_chords_of_component(s, comp);
+}
+
+// A hyperbola whose centre is on the curve as this split counts it (|g| <= kZero there) is the
+// line pair of its asymptotes: between the branches, 1e-6 apart at the centre, g is within kZero
+// of 0, and the vertices found on the curve there (a centre on the face's boundary) lie on the
+// asymptotes, not on either branch. (Two sources' edge lines that nearly meet.)
+void DomainMesh::hyperbola_as_line_pair(const Quadratic2& g, ConicDecomposition& dec) {
+    const CurveComponent h = dec.components[0];  // both branches share c, and u, v up to sign
+    if (!(std::fabs(g(h.c)) <= kZero)) return;
+    dec.components.clear();
+    for (const Vec2 dir : {h.u + h.v, h.u - h.v}) {
+        CurveComponent line;
+        line.kind = CurveKind::Line;
+        line.u = dir / norm(dir);
+        line.c = h.c - dot(h.c, line.u) * line.u;  // the foot of the origin, as decompose_conic's lines
+        dec.components.push_back(line);
+    }
+    dec.type = ConicType::LinePair;
 }
 
 // The two lines of a line pair cross at the centre: inside the face it must be a vertex of both.

@@ -73,6 +73,31 @@ TEST(Integrals, QuarterDiscByGreenAlongAConicArc) {
     }
 }
 
+// A line pair whose centre lies on the face's boundary (degenerate seed 545: two sources' edge
+// lines meeting on a domain's edge): g = (x - 1/2)^2 - y^2 + k crosses the unit right triangle in
+// two chords from (1/2, 0), to (0, 1/2) and to (3/4, 1/4): g > 0 on the triangles left and right
+// of them (areas 1/8 and 1/16), g < 0 on the wedge between (5/16). g along the bottom edge never
+// changes sign, so the centre is found only as a point where the curve touches the edge. With k
+// = 1e-13 the curve is a hyperbola whose branches pass 3e-7 from the centre, on the curve as the
+// split counts it (1e-12), and it is split as its asymptotes.
+TEST(DomainSplit, LinePairCentredOnTheBoundary) {
+    for (double k : {0.0, 1e-13, -1e-13}) {
+        SCOPED_TRACE(k);
+        DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+        const auto pieces = m.split_face(1, Quadratic2{1, 0, -1, -0.5, 0, 0.25 + k});
+        double pos = 0, neg = 0;
+        int npos = 0;
+        for (auto piece : pieces) {
+            (piece.sign > 0 ? pos : neg) += m.face_area(piece.face);
+            npos += piece.sign > 0;
+        }
+        EXPECT_EQ(pieces.size(), 3u);
+        EXPECT_EQ(npos, 2);
+        EXPECT_NEAR(pos, 1.0 / 8 + 1.0 / 16, 1e-9);
+        EXPECT_NEAR(neg, 5.0 / 16, 1e-9);
+    }
+}
+
 // The integral of sqrt(x^2 + y^2 + h^2) over the quarter disc is (pi/2)((r^2+h^2)^1.5 - h^3)/3.
 TEST(Integrals, SqrtOverQuarterDisc) {
     for (double h : {0.0, 0.05, 0.4}) {
