@@ -726,7 +726,7 @@ TEST_F(Cli, StatsOfATiltedTriangleOverAPlane) {
     for (double p : {50.0, 90.0, 95.0, 99.0}) {
         double lo = 0.2, hi = 0.9;  // above(t) = (1 - p) A, by bisection on the hand formula
         for (int it = 0; it < 200; ++it) ((tilted_above(0.5 * (lo + hi)) > (1 - p / 100) * A) ? lo : hi) = 0.5 * (lo + hi);
-        char key[8];
+        char key[32];
         std::snprintf(key, sizeof key, "%g", p);
         EXPECT_NEAR(num(pct, key), hi, 1e-9 * std::sqrt(200.81) + 1e-12) << p;  // 1e-9 of the diagonal of [-5,5]^2 x [0,0.9]
     }
