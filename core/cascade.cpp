@@ -124,26 +124,33 @@ public:
     PieceQueue(const std::vector<uint32_t>& order, const std::vector<double>& U, std::function<Piece(uint32_t)> root)
         : order_(order), U_(U), root_(std::move(root)) {}
 
+    // A root piece is taken under the lock and built after it (on a mesh of a million targets,
+    // building them under the lock kept the second thread waiting).
     bool pop(Piece& out, const std::atomic<bool>* cancel) {
-        std::unique_lock<std::mutex> lock(m_);
-        for (;;) {
-            if (cancel && cancel->load()) return false;
-            const bool have_root = next_ < order_.size();
-            if (!heap_.empty() && (!have_root || heap_.front().u >= U_[order_[next_]])) {
-                std::pop_heap(heap_.begin(), heap_.end(), lower);
-                out = heap_.back();
-                heap_.pop_back();
-            } else if (have_root) {
-                out = root_(order_[next_++]);
-            } else if (busy_ == 0) {
-                return false;
-            } else {
-                cv_.wait(lock);
-                continue;
+        uint32_t root = UINT32_MAX;
+        {
+            std::unique_lock<std::mutex> lock(m_);
+            for (;;) {
+                if (cancel && cancel->load()) return false;
+                const bool have_root = next_ < order_.size();
+                if (!heap_.empty() && (!have_root || heap_.front().u >= U_[order_[next_]])) {
+                    std::pop_heap(heap_.begin(), heap_.end(), lower);
+                    out = heap_.back();
+                    heap_.pop_back();
+                } else if (have_root) {
+                    root = order_[next_++];
+                } else if (busy_ == 0) {
+                    return false;
+                } else {
+                    cv_.wait(lock);
+                    continue;
+                }
+                ++busy_;
+                break;
             }
-            ++busy_;
-            return true;
         }
+        if (root != UINT32_MAX) out = root_(root);
+        return true;
     }
     void push(const Piece& p) {
         std::lock_guard<std::mutex> lock(m_);

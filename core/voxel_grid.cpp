@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <future>
 #include <limits>
 
 #include "parallel.h"
@@ -27,7 +26,8 @@ bool triangle_box_overlap(const Vec3& bc, const Vec3& h, const Vec3& a, const Ve
     return !separates(cross(e[0], e[1]));  // triangle normal
 }
 
-MeshGrid::MeshGrid(const TriangleMesh& mesh, double k) : mesh_(&mesh) {
+MeshGrid::MeshGrid(const TriangleMesh& mesh, double k, int threads) : mesh_(&mesh) {
+    threads = mesh.num_triangles() > 20000 ? resolve_threads(threads) : 1;  // small meshes: not worth threads
     if (!(k > 0)) k = 1;
     const Box3 box = mesh.bounds();
     const double nm = std::max<double>(1, mesh.num_triangles());
@@ -61,24 +61,43 @@ MeshGrid::MeshGrid(const TriangleMesh& mesh, double k) : mesh_(&mesh) {
     margin_ = 1e-9 * voxel_size + 4e-15 * M;
 
     const size_t nv = num_voxels();
-    offs_.assign(nv + 1, 0);  // two passes: count, then fill
-    for (uint32_t t = 0; t < mesh.num_triangles(); ++t)
-        for_each_voxel_of(mesh.corners(t), [&](size_t v) { ++offs_[v + 1]; });
+    // Two passes over the triangles, in chunks on `threads` threads: count, then fill (each with
+    // atomic increments); then each voxel's list is sorted, so it is the same whatever the threads.
+    const uint32_t nt = (uint32_t)mesh.num_triangles();
+    const size_t chunk = 4096, chunks = (nt + chunk - 1) / chunk;
+    auto triangles_of = [&](size_t c, auto&& f) {
+        for (uint32_t t = uint32_t(c * chunk); t < std::min<size_t>(nt, (c + 1) * chunk); ++t) f(t);
+    };
+    offs_.assign(nv + 1, 0);
+    parallel_for(chunks, threads, nullptr, [&](size_t c) {
+        triangles_of(c, [&](uint32_t t) {
+            for_each_voxel_of(mesh.corners(t), [&](size_t v) { __atomic_fetch_add(&offs_[v + 1], 1, __ATOMIC_RELAXED); });
+        });
+    });
     for (size_t v = 0; v < nv; ++v) offs_[v + 1] += offs_[v];
     items_.resize(offs_[nv]);
     std::vector<size_t> pos(offs_.begin(), offs_.end() - 1);
-    for (uint32_t t = 0; t < mesh.num_triangles(); ++t)
-        for_each_voxel_of(mesh.corners(t), [&](size_t v) { items_[pos[v]++] = t; });
+    parallel_for(chunks, threads, nullptr, [&](size_t c) {
+        triangles_of(c, [&](uint32_t t) {
+            for_each_voxel_of(mesh.corners(t), [&](size_t v) { items_[__atomic_fetch_add(&pos[v], 1, __ATOMIC_RELAXED)] = t; });
+        });
+    });
     // Each listed triangle's box beside it, rounded outward to float: nearest() rejects most
     // triangles from the list alone, without fetching their corners.
     boxes_.resize(items_.size());
-    for (size_t i = 0; i < items_.size(); ++i) {
-        const Box3 b = mesh.triangle_bounds(items_[i]);
-        for (int c = 0; c < 3; ++c) {
-            boxes_[i].lo[c] = std::nextafter((float)b.lo[c], -HUGE_VALF);
-            boxes_[i].hi[c] = std::nextafter((float)b.hi[c], HUGE_VALF);
+    const size_t vchunk = 65536;
+    parallel_for((nv + vchunk - 1) / vchunk, threads, nullptr, [&](size_t c) {
+        for (size_t v = c * vchunk; v < std::min(nv, (c + 1) * vchunk); ++v) {
+            if (threads > 1) std::sort(items_.begin() + offs_[v], items_.begin() + offs_[v + 1]);
+            for (size_t i = offs_[v]; i < offs_[v + 1]; ++i) {
+                const Box3 b = mesh.triangle_bounds(items_[i]);
+                for (int k = 0; k < 3; ++k) {
+                    boxes_[i].lo[k] = std::nextafter((float)b.lo[k], -HUGE_VALF);
+                    boxes_[i].hi[k] = std::nextafter((float)b.hi[k], HUGE_VALF);
+                }
+            }
         }
-    }
+    });
     // Occupancy pyramid for far queries.
     pyramid_.push_back({nx, ny, nz, std::vector<uint8_t>(nv)});
     for (size_t v = 0; v < nv; ++v) pyramid_[0].occ[v] = offs_[v + 1] > offs_[v];
@@ -95,12 +114,10 @@ MeshGrid::MeshGrid(const TriangleMesh& mesh, double k) : mesh_(&mesh) {
 }
 
 VoxelGrid::VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double k, int threads) {
-    // Two threads pay off only when both grids take a while to build.
-    const bool both = resolve_threads(threads) > 1 && std::min(a.num_triangles(), b.num_triangles()) > 20000;
-    std::future<std::shared_ptr<const MeshGrid>> gb;
-    if (both) gb = std::async(std::launch::async, [&] { return std::make_shared<const MeshGrid>(b, k); });
-    grid_[0] = std::make_shared<const MeshGrid>(a, k);
-    grid_[1] = both ? gb.get() : std::make_shared<const MeshGrid>(b, k);
+    // One after the other, each on all the threads (a mesh of a million triangles and one of a
+    // quarter of that, each on its own thread, left one core idle for most of the build).
+    grid_[0] = std::make_shared<const MeshGrid>(a, k, threads);
+    grid_[1] = std::make_shared<const MeshGrid>(b, k, threads);
 }
 
 std::array<int, 3> MeshGrid::coords(size_t idx) const {

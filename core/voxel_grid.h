@@ -25,7 +25,8 @@ class MeshGrid {
 public:
     // Grid over the bounding box of m (used vertices only). Cubic voxels of edge s from Straub's
     // k = s^2 n / (2(lw+lh+wh)); at most about 8n+64 voxels. Keeps a pointer to m: m must outlive it.
-    explicit MeshGrid(const TriangleMesh& m, double triangles_per_voxel = 1.0);
+    // `threads`: for the build (0: all cores); the grid is the same whatever their number.
+    explicit MeshGrid(const TriangleMesh& m, double triangles_per_voxel = 1.0, int threads = 0);
 
     int nx = 1, ny = 1, nz = 1;
     double voxel_size = 1;
@@ -87,8 +88,8 @@ private:
 // (hlens-cli batch indexes its reference once).
 class VoxelGrid {
 public:
-    // Keeps pointers to a and b: they must outlive it. Large meshes' grids are built on two threads
-    // (`threads` 0: all cores; 1: one after the other).
+    // Keeps pointers to a and b: they must outlive it. Large meshes' grids are built on `threads`
+    // threads (0: all cores).
     VoxelGrid(const TriangleMesh& a, const TriangleMesh& b, double triangles_per_voxel = 1.0, int threads = 0);
     // From grids already built (their meshes must outlive them).
     VoxelGrid(std::shared_ptr<const MeshGrid> a, std::shared_ptr<const MeshGrid> b) : grid_{std::move(a), std::move(b)} {}

@@ -758,11 +758,11 @@ TEST_F(Cli, ToleranceJustBelowAndAboveTheDistanceFlipsTheExitCode) {
         EXPECT_EQ(r.code, 4) << r.err;
         EXPECT_NE(r.out.find("\"within_tolerance\": false"), std::string::npos) << r.out;
         EXPECT_NEAR(num(sub(r.out, "a_to_b"), "distance"), h, 1e-12);
-        if (!stats) EXPECT_NE(r.out.find("\"stopped_early\": false"), std::string::npos) << r.out;
+        if (!stats) { EXPECT_NE(r.out.find("\"stopped_early\": false"), std::string::npos) << r.out; }
         r = run(above);
         EXPECT_EQ(r.code, 0) << r.err;
         EXPECT_NE(r.out.find("\"within_tolerance\": true"), std::string::npos) << r.out;
-        if (stats) EXPECT_EQ(num(sub(r.out, "a_to_b"), "fraction_above"), 0.0);
+        if (stats) { EXPECT_EQ(num(sub(r.out, "a_to_b"), "fraction_above"), 0.0); }
     }
 }
 

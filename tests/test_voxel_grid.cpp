@@ -357,6 +357,22 @@ TEST(VoxelGrid, SizeFollowsStraubFormula) {
     check_coverage(pair);
 }
 
+// A large mesh's grid is built on several threads (atomic counts and fills, then each voxel's
+// list sorted): it must be the one-thread grid, list for list, and in increasing order.
+TEST(VoxelGrid, BuiltOnThreadsIsTheSameGrid) {
+    const TriangleMesh m = height_field(120, [](double x, double y) { return 0.2 * std::sin(5 * x) * std::cos(4 * y); });
+    ASSERT_GT(m.num_triangles(), 20000u);  // below that the build stays on one thread
+    const MeshGrid one(m, 1.0, 1), two(m, 1.0, 2);
+    ASSERT_EQ(one.num_voxels(), two.num_voxels());
+    ASSERT_EQ(one.num_assignments(), two.num_assignments());
+    for (size_t v = 0; v < one.num_voxels(); ++v) {
+        ASSERT_TRUE(std::equal(one.begin(v), one.end(v), two.begin(v), two.end(v))) << "voxel " << v;
+        ASSERT_TRUE(std::is_sorted(two.begin(v), two.end(v))) << "voxel " << v;
+    }
+    for (const Vec3 p : {Vec3{0.3, 0.4, 0.5}, Vec3{-1, 2, 0}, Vec3{0.9, 0.1, -0.2}})
+        EXPECT_EQ(one.nearest(p).triangle, two.nearest(p).triangle);
+}
+
 TEST(VoxelGrid, IndexCoordsRoundTrip) {
     TriangleMesh a = cube_mesh({0, 0, 0}, {3, 2, 1});
     MeshGrid g(a, 0.1);
