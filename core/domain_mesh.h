@@ -133,6 +133,12 @@ public:
     // its own (core/integrals.cpp), whatever the state of the original's cache.
     void forget_face_boxes() { std::fill(box_stamp_.begin(), box_stamp_.end(), 0); }
 
+    // How far (frame units, T' of unit size) a vertex may sit from where its curves meet: crossings
+    // this close along a curve are one point (kCluster below), and a vertex polished onto two
+    // curves may sit this far off a third. A domain's boundary, and so the domain, may reach this
+    // far past its label's region.
+    static constexpr double kVertexTolerance = 1e-7;
+
     // Building blocks, public for tests.
     struct SplitPiece { int face; int sign; };
     std::vector<SplitPiece> split_face(int f, const Quadratic2& g);
@@ -224,7 +230,7 @@ private:
     // Crossing points this close along a curve are one point: where several curves meet (the
     // shadow of a vertex shared by many sources), nearly double roots are only accurate to about
     // sqrt(epsilon). (The split's other tolerances are in domain_split.cpp.)
-    static constexpr double kCluster = 1e-7;
+    static constexpr double kCluster = kVertexTolerance;
 
     template <class Fn> void for_each_half_edge(int f, Fn&& fn) const;  // in face_half_edges() order
     void collect_half_edges(int f, std::vector<int>& out) const;

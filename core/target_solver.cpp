@@ -586,9 +586,11 @@ std::string TargetSolver::validate(bool thorough) const {
             if (std::fabs(poly - direct) > 1e-7 * direct + 16 * noise)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): polynomial %.12g but d^2 = %.12g at (%.9g, %.9g)", f,
                                      L.source, region_name(L.region), poly, direct, p.x, p.y), buf;
-            // 3. The point lies in the region of the label's feature or of one tied with it.
+            // 3. The point lies in the region of the label's feature or of one tied with it, up to
+            // how far the domain's boundary may sit from the region's line (twice the vertex
+            // tolerance: on a domain 1e-7 wide at a cluster of boundaries every point is that near).
             bool inside = false;
-            for (const SourceRegion* r : tied) inside = inside || in_region(*r, p, 1e-9);
+            for (const SourceRegion* r : tied) inside = inside || in_region(*r, p, 2 * DomainMesh::kVertexTolerance);
             if (thorough && !inside)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
                                      L.source, region_name(L.region), p.x, p.y), buf;

@@ -122,7 +122,8 @@ public:
     // The domain mesh's invariants, then per domain (issue 8): its label names a feature of an
     // inserted source whose quadratic is the domain's polynomial (up to the tie rule); at several
     // interior points the polynomial equals d^2 computed directly, and the point lies in the
-    // label's region or in that of a feature tied with it. Empty if all hold, else the first failure.
+    // label's region or in that of a feature tied with it (up to twice
+    // DomainMesh::kVertexTolerance). Empty if all hold, else the first failure.
     std::string validate(bool thorough = true) const;
 
     // The exact squared distance from a point of T' (frame coordinates) to the inserted sources.

@@ -9,6 +9,8 @@
 #include <hlens/point_triangle.h>
 #include <hlens/voxel_grid.h>
 
+#include "test_meshes.h"
+
 using namespace hlens;
 
 namespace {
@@ -360,7 +362,7 @@ TEST(VoxelGrid, SizeFollowsStraubFormula) {
 // A large mesh's grid is built on several threads (atomic counts and fills, then each voxel's
 // list sorted): it must be the one-thread grid, list for list, and in increasing order.
 TEST(VoxelGrid, BuiltOnThreadsIsTheSameGrid) {
-    const TriangleMesh m = height_field(120, [](double x, double y) { return 0.2 * std::sin(5 * x) * std::cos(4 * y); });
+    const TriangleMesh m = hlens_test::height_field(120, [](double x, double y) { return 0.2 * std::sin(5 * x) * std::cos(4 * y); });
     ASSERT_GT(m.num_triangles(), 20000u);  // below that the build stays on one thread
     const MeshGrid one(m, 1.0, 1), two(m, 1.0, 2);
     ASSERT_EQ(one.num_voxels(), two.num_voxels());
