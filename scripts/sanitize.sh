@@ -22,7 +22,7 @@ if [ -n "${CI:-}" ] && [ ! -x build-asan/bin/hlens ]; then
 fi
 
 logs="$PWD/build-asan/sanitizer-logs"
-rm -rf "$logs"
+rm -rf "$logs" "$logs-tracer"
 mkdir -p "$logs"
 # Mesa's software OpenGL driver (swrast_dri.so, which hlens gets through libGLX_mesa under Xvfb) is
 # unloaded (dlclose) at exit before LeakSanitizer looks, and blocks that only the driver's globals
@@ -36,8 +36,25 @@ export ASAN_OPTIONS="log_path=$logs/asan:strict_string_checks=1:verify_asan_link
 export UBSAN_OPTIONS="log_path=$logs/ubsan:print_stacktrace=1:halt_on_error=1"
 
 status=0
-ctest --test-dir build-asan --output-on-failure -j2 || status=$?
+# A test is run again once if it fails (--repeat until-pass:2): LeakSanitizer's own tracer
+# sometimes crashes at a hlens process's exit ("Tracer caught signal 11 ... LeakSanitizer has
+# encountered a fatal error", seen twice in ~10 runs of the GUI tests, once in CI; every rerun
+# passed). That report says LeakSanitizer could not check that process, not that anything leaked:
+# it is set aside (and listed) when the test passed on its second run; any other report fails.
+ctest --test-dir build-asan --output-on-failure -j2 --repeat until-pass:2 || status=$?
 
+tracer_only() {  # the report is nothing but LeakSanitizer's tracer failing
+  ! grep -v -e '^Tracer caught signal' -e 'LeakSanitizer has encountered a fatal error' -e '==HINT:' "$1" | grep -q .
+}
+if [ "$status" -eq 0 ] && compgen -G "$logs/*" >/dev/null; then
+  for f in "$logs"/*; do
+    if tracer_only "$f"; then
+      mkdir -p "$logs-tracer"
+      mv "$f" "$logs-tracer/"
+      echo "sanitize.sh: note: LeakSanitizer's tracer crashed in one process ($(basename "$f")); its test passed when run again" >&2
+    fi
+  done
+fi
 if compgen -G "$logs/*" >/dev/null; then
   echo "sanitize.sh: sanitizer reports:" >&2
   for f in "$logs"/*; do
