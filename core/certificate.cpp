@@ -10,7 +10,6 @@
 
 #include "cascade.h"
 #include "confirm_top.h"
-#include "point_triangle.h"
 #include "target_solver.h"
 
 namespace hlens {
@@ -29,7 +28,6 @@ std::string format_g17(double v) {
 // be an ulp of 1e6 for a mesh of size 1 far from the origin). The grid's nearest point to the
 // rounded sum bounds which triangles can be nearest; `to_point` is the nearest point.
 double witness_distance(const MeshGrid& grid, const Vec3& origin, const Vec3& offset, Vec3& to_point) {
-    const TriangleMesh& B = grid.mesh();
     const Vec3 p = origin + offset;
     const MeshGrid::Nearest q = grid.nearest(p);
     to_point = q.point;
@@ -37,15 +35,7 @@ double witness_distance(const MeshGrid& grid, const Vec3& origin, const Vec3& of
     // |p - (origin + offset)| <= half an ulp per axis; triangles farther than d0 + 2 eps from p
     // are farther from the exact point than the one found.
     const double eps = 0x1p-53 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z)) * (1 + 1e-9);
-    const double reach = (std::sqrt(q.dist2) + 3 * eps) * (1 + 1e-12);
-    double best = HUGE_VAL;
-    for (size_t t = 0; t < B.num_triangles(); ++t) {
-        const Box3 tb = B.triangle_bounds(t);
-        if (point_box_distance2(p, tb.lo, tb.hi) > reach * reach) continue;
-        const auto c = B.corners(t);
-        best = std::min(best, closest_point_on_triangle(offset, c[0] - origin, c[1] - origin, c[2] - origin).dist2);
-    }
-    return std::sqrt(best);
+    return grid.distance_relative(origin, offset, (std::sqrt(q.dist2) + 3 * eps) * (1 + 1e-12));
 }
 
 // The witness: the largest exact value, the lowest index among equals. Returns its square, or -1
@@ -126,12 +116,12 @@ void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode,
     // The top, confirmed without the domain meshes to 1e-10 of the diagonal (the interval's goal
     // is 1e-9); where it finds a point farther than the domain meshes did, that point is the witness.
     const double tol = 1e-10 * box.diagonal();
-    const TopConfirmation top = confirm_top(grid, side, tab, r.distance, tol);
+    const TopConfirmation top = confirm_top(grid, side, tab, r.distance, tol, coord);
     r.lower = lower_end(grid, side, tab, box, r);
     Vec3 origin = top.origin, offset = top.offset;
     double polished;
     bool raised = top.raised;
-    if (!raised) raised = polish_witness(grid, side, r.target, r.from_point, r.distance, tol, origin, offset, polished);
+    if (!raised) raised = polish_witness(grid, side, r.target, r.from_point, r.distance, tol, coord, origin, offset, polished);
     if (raised) {
         Vec3 to_point;
         const double d = witness_distance(grid.of(1 - side), origin, offset, to_point);

@@ -90,13 +90,14 @@ double rounding(double size, double d, const Tri3& T) {
     return 256 * 0x1p-52 * (size + d + m);
 }
 
-// d(o + at(uv), T), T the triangle the grid finds nearest to the rounded world point: at least
-// d(o + at(uv), B), an upper bound wherever the rounding put the point.
-double measure(const MeshGrid& g, const Target& tg, Vec2 uv, uint32_t& hint) {
-    const Vec3 p = tg.at(uv);
+// d(o + p, T), T the triangle the grid finds nearest to the rounded world point: at least
+// d(o + p, B), an upper bound wherever the rounding put the point. `world_d2`: the grid's squared
+// distance there.
+double measure(const MeshGrid& g, const Target& tg, const Vec3& p, uint32_t& hint, double* world_d2 = nullptr) {
     const MeshGrid::Nearest q = g.nearest(tg.o + p, hint);
     if (q.triangle == UINT32_MAX) return HUGE_VAL;
     hint = q.triangle;
+    if (world_d2) *world_d2 = q.dist2;
     return dist_rel(p, relative(g.mesh(), q.triangle, tg.o));
 }
 
@@ -108,37 +109,14 @@ double measure(const MeshGrid& g, const Target& tg, Vec2 uv, uint32_t& hint) {
 // Elsewhere the grid's nearest triangle is measured, and err covers its choice (twice the
 // rounding). `hint` becomes the triangle at that distance.
 double exact_distance(const MeshGrid& g, const Target& tg, const Vec3& p, uint32_t& hint, double& err) {
+    double world_d2;
+    const double d = measure(g, tg, p, hint, &world_d2);
+    if (!(d < HUGE_VAL)) return d;
     const Vec3 w = tg.o + p;
-    const MeshGrid::Nearest q = g.nearest(w, hint);
-    if (q.triangle == UINT32_MAX) return HUGE_VAL;
-    hint = q.triangle;
     const double off = 0x1p-52 * (std::fabs(w.x) + std::fabs(w.y) + std::fabs(w.z) + norm(p));
-    const TriangleMesh& B = g.mesh();
     err = tg.precise ? 0.0 : 2 * off;
-    if (!tg.precise) return dist_rel(p, relative(B, q.triangle, tg.o));
-    const double reach = (std::sqrt(q.dist2) + 4 * off) * (1 + 1e-12) + g.margin();
-    double best = HUGE_VAL;
-    auto consider = [&](uint32_t t) {
-        const double d = dist_rel(p, relative(B, t, tg.o));
-        if (d < best || (d == best && t < hint)) best = d, hint = t;
-    };
-    const Vec3 r{reach, reach, reach};
-    const auto lo = g.locate(w - r), hi = g.locate(w + r);
-    const double voxels = double(hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
-    if (voxels > double(B.num_triangles())) {  // far from B: a scan is cheaper
-        for (uint32_t t = 0; t < B.num_triangles(); ++t) {
-            const Box3 tb = B.triangle_bounds(t);
-            if (point_box_distance2(w, tb.lo, tb.hi) <= reach * reach) consider(t);
-        }
-        return best;
-    }
-    for (int k = lo[2]; k <= hi[2]; ++k)
-        for (int j = lo[1]; j <= hi[1]; ++j)
-            for (int i = lo[0]; i <= hi[0]; ++i) {
-                const size_t v = g.index(i, j, k);
-                for (const uint32_t* t = g.begin(v); t != g.end(v); ++t) consider(*t);
-            }
-    return best;
+    if (!tg.precise) return d;
+    return g.distance_relative(tg.o, p, (std::sqrt(world_d2) + 4 * off) * (1 + 1e-12) + g.margin(), &hint);
 }
 
 // A convex piece of a sub-triangle, relative to the target's corner.
@@ -253,10 +231,10 @@ bool ridge(const Piece& Q, const Tri3& T, const Tri3& U, Vec3& a, Vec3& nrm) {
 
 // An upper bound of d(., B) over the piece Q: d(., T), T = triangle t of B, at Q's corners
 // (convexity). Where a corner is farther from T than `goal`, Q is cut between T and the corner's
-// nearest triangle, when those share an edge, and each half is bounded by its own triangle, up to
-// `depth` cuts deep: a sub-triangle across a seam of B (coplanar or folded neighbours, where the
-// corner bound alone overshoots by the corner's distance past the seam) closes without splitting
-// it down to the tolerance. `slack` gathers the distances' rounding.
+// nearest triangle U (bisector, ridge or across_edge, in that order) and each half is bounded by
+// its own triangle, up to `depth` cuts deep: a sub-triangle across a seam of B (where the corner
+// bound alone overshoots by the corner's distance past the seam) closes without splitting it down
+// to the tolerance. `slack` gathers the distances' rounding.
 double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t t, double goal, int depth, double& slack) {
     const Tri3 T = relative(g.mesh(), t, tg.o);
     double worst = -HUGE_VAL;
@@ -281,10 +259,9 @@ double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t
     return std::min(worst, std::max(on_t, on_u));
 }
 
-// Whether a world point's rounding (a few ulps of the coordinates) reaches 1e-3 of `tol`.
-bool rounding_matters(const VoxelGrid& grid, int side, double tol) {
-    return 16 * 0x1p-52 * coordinate_magnitude(grid.mesh(side), grid.mesh(1 - side)) > 1e-3 * tol;
-}
+// Whether a world point's rounding (a few ulps of `coord`, the coordinates' magnitude) reaches
+// 1e-3 of `tol`.
+bool rounding_matters(double coord, double tol) { return 16 * 0x1p-52 * coord > 1e-3 * tol; }
 
 // A local search for the largest distance near uv, inside the target: steps from `h` down to the
 // last bit, eight directions each.
@@ -311,13 +288,13 @@ Vec2 polish(const MeshGrid& g, const Target& tg, Vec2 uv, double h, double& valu
 
 // Kept whole (~70 lines): the subdivision of each target shares the running largest distance, the
 // raised witness and the node budgets with the loop over targets.
-TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol) {
+TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol, double coord) {
     const TriangleMesh& A = grid.mesh(side);
     const MeshGrid& g = grid.of(1 - side);
     const TriangleMesh& B = g.mesh();
     TopConfirmation out;
     out.upper = best;
-    const bool precise = rounding_matters(grid, side, tol);
+    const bool precise = rounding_matters(coord, tol);
     double L = best;  // the largest distance measured so far
     Vec2 raised_uv;
     double raised_r = 0;
@@ -346,13 +323,12 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
             const Vec3 m = tg.at(muv);
             const double r = std::max({norm(S[0] - m), norm(S[1] - m), norm(S[2] - m)}) * (1 + 1e-12);
             uint32_t near = s.hint;
-            const double dm = measure(g, tg, muv, near);
+            const double dm = measure(g, tg, m, near);
             if (!(dm < HUGE_VAL)) { out.upper = HUGE_VAL; return out; }  // B has no triangle
             const Tri3 T = relative(B, near, tg.o);
             const double slack = rounding(tg.size, dm, T) + 0x1p-46 * tg.size;  // (+ sub-triangles' seams)
             uint32_t nearest = near;  // the centre's nearest triangle without the world point's rounding,
-            bool exact = false;       // once known
-            if (dm > L + slack) exact = true;
+            const bool exact = dm > L + slack;  // known at once where the centre may be farther than L
             double err = 0;
             const double de = exact ? exact_distance(g, tg, m, nearest, err) - err : dm;
             if (exact && de > L + slack) {  // farther than L for certain
@@ -404,9 +380,9 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
 }
 
 bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3& point, double value, double tol,
-                    Vec3& origin, Vec3& offset, double& polished) {
+                    double coord, Vec3& origin, Vec3& offset, double& polished) {
     const auto c = grid.mesh(side).corners(target);
-    const Target tg{c[0], c[1] - c[0], c[2] - c[0], 0, rounding_matters(grid, side, tol)};
+    const Target tg{c[0], c[1] - c[0], c[2] - c[0], 0, rounding_matters(coord, tol)};
     // The point's (u, v) on the target: the normal equations of p - o = u E1 + v E2.
     const Vec3 p = point - c[0];
     const double a = dot(tg.e1, tg.e1), b = dot(tg.e1, tg.e2), d = dot(tg.e2, tg.e2), det = a * d - b * b;

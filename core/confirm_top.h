@@ -23,13 +23,15 @@ struct TopConfirmation {
 // `best`: the result the domain meshes give (the largest exact value). `tol`: a sub-triangle is
 // done once its bound is within tol of the largest distance measured, or its radius below tol; a
 // target is closed when all its sub-triangles are done within the node budget, else open.
-TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol);
+// `coord`: the coordinates' magnitude (coordinate_magnitude), which says where a world point's
+// rounding matters at `tol`.
+TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol, double coord);
 
 // A local search from the witness `point` (on target `target`, whose distance is `value`) for a
-// farther point nearby (`tol`: confirm_top's): a domain mesh's maximum at a corner of domains may
+// farther point nearby (`tol`, `coord`: confirm_top's): a domain mesh's maximum at a corner of domains may
 // sit ~1e-7 of the target's size off. True (and the point origin + offset, its distance
 // `polished`) if one is farther by more than rounding.
 bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3& point, double value, double tol,
-                    Vec3& origin, Vec3& offset, double& polished);
+                    double coord, Vec3& origin, Vec3& offset, double& polished);
 
 }  // namespace hlens

@@ -173,6 +173,14 @@ void CurveComponent::pieces(double t0, double t1, std::vector<Piece>& out) const
     }
 }
 
+CurveComponent line_component(Vec2 point, Vec2 dir) {
+    CurveComponent cc;
+    cc.kind = CurveKind::Line;
+    cc.u = dir / norm(dir);
+    cc.c = point - dot(point, cc.u) * cc.u;  // foot of the origin: keeps parameters small
+    return cc;
+}
+
 ConicDecomposition decompose_conic(const Quadratic2& q) {
     ConicDecomposition out;
     decompose_conic(q, out);
@@ -183,13 +191,7 @@ namespace {
 // Relative thresholds: the plane is scaled so the target has unit size.
 constexpr double eps_quad = 1e-12, eps_par = 1e-10, eps_k = 1e-14, eps_lin = 1e-12;
 
-void add_line(ConicDecomposition& out, Vec2 point, Vec2 dir) {
-    CurveComponent cc;
-    cc.kind = CurveKind::Line;
-    cc.u = dir / norm(dir);
-    cc.c = point - dot(point, cc.u) * cc.u;  // foot of the origin: keeps parameters small
-    out.components.push_back(cc);
-}
+void add_line(ConicDecomposition& out, Vec2 point, Vec2 dir) { out.components.push_back(line_component(point, dir)); }
 
 // Central conic (both eigenvalues l1, l2 of the quadratic part away from 0, eigenvectors e1, e2;
 // b1, b2: the linear part along them): l1 X'^2 + l2 Y'^2 + k = 0 around the centre m.

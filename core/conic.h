@@ -122,5 +122,8 @@ struct ConicDecomposition {
 // line, a single point) have no components: they never separate a positive from a negative part.
 ConicDecomposition decompose_conic(const Quadratic2& q);
 void decompose_conic(const Quadratic2& q, ConicDecomposition& out);  // the same, reusing `out`
+// The line through `point` along `dir` as decompose_conic gives its lines (unit direction, anchored
+// at the foot of the origin, which keeps parameters small).
+CurveComponent line_component(Vec2 point, Vec2 dir);
 
 }  // namespace hlens

@@ -348,9 +348,7 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
     for (int k = 0; k < nroots; ++k) {
         const double z = roots[k];
         Vec2 p = curve(z);
-        int va = half_[2 * cur].origin, vb = half_[2 * cur + 1].origin;
-        if (norm(p - vertices_[va].p) <= kSnap) { s.mark_zero(va); ++stats_.snaps; continue; }
-        if (norm(p - vertices_[vb].p) <= kSnap) { s.mark_zero(vb); ++stats_.snaps; continue; }
+        if (snap_to_end(s, cur, p)) continue;
         if (!(z > edges_[cur].z0 && z < edges_[cur].z1)) continue;
         polish_on_two(g, eq, p);
         int v = split_edge(cur, z);
@@ -364,9 +362,9 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
 // Where the centre of a line pair g = 0 lies on a straight arc (g along the arc has a double root
 // there, and g's gradient vanishes), the lines' pieces inside the face end there although g keeps
 // its sign along the arc: the point becomes a vertex on the curve. (A conic merely tangent to the
-// arc ends nowhere there.) (Degenerate seed 545: two sources' edge lines meeting on a domain's boundary, the line
-// pair's centre 1e-9 outside the face, and the whole face given to the farther source.) True if
-// it did (then the arc has no sign change to look for).
+// arc ends nowhere there.) (Degenerate seed 545: two sources' edge lines meeting on a domain's
+// boundary, the line pair's centre 1e-9 outside the face, and the whole face given to the farther
+// source.) True if it did (then the arc has no sign change to look for).
 bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along) {
     const double A = along.c[2], B = along.c[1], C = along.c[0];  // along a straight arc, degree 2
     if (A == 0 || along.c[3] != 0 || along.c[4] != 0) return false;
@@ -374,12 +372,21 @@ bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along)
     if (!(z > edges_[e].z0 && z < edges_[e].z1) || !(std::fabs(C - B * B / (4 * A)) <= kZero)) return false;
     const Vec2 p = edges_[e].curve(z);
     if (!(norm(s.g.gradient(p)) <= 1e-6)) return false;  // a tangent conic: nothing ends there
+    if (!snap_to_end(s, e, p)) s.mark_zero(split_edge(e, z));
+    return true;
+}
+
+// A point of g = 0 on arc e within kSnap of one of its ends is that end: marked on the curve.
+bool DomainMesh::snap_to_end(SplitCall& s, int e, Vec2 p) {
     for (int end = 0; end < 2; ++end) {
         const int v = half_[2 * e + end].origin;
-        if (norm(p - vertices_[v].p) <= kSnap) { s.mark_zero(v); ++stats_.snaps; return true; }
+        if (norm(p - vertices_[v].p) <= kSnap) {
+            s.mark_zero(v);
+            ++stats_.snaps;
+            return true;
+        }
     }
-    s.mark_zero(split_edge(e, z));
-    return true;
+    return false;
 }
 
 // 2. Classify vertices on the curve and boundary arcs by side (see SplitCall::side_value).
@@ -441,13 +448,7 @@ void DomainMesh::hyperbola_as_line_pair(const Quadratic2& g, ConicDecomposition&
     const CurveComponent h = dec.components[0];  // both branches share c, and u, v up to sign
     if (!(std::fabs(g(h.c)) <= kZero)) return;
     dec.components.clear();
-    for (const Vec2 dir : {h.u + h.v, h.u - h.v}) {
-        CurveComponent line;
-        line.kind = CurveKind::Line;
-        line.u = dir / norm(dir);
-        line.c = h.c - dot(h.c, line.u) * line.u;  // the foot of the origin, as decompose_conic's lines
-        dec.components.push_back(line);
-    }
+    for (const Vec2 dir : {h.u + h.v, h.u - h.v}) dec.components.push_back(line_component(h.c, dir));
     dec.type = ConicType::LinePair;
 }
 

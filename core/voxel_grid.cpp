@@ -183,6 +183,38 @@ std::vector<size_t> MeshGrid::voxels_of_triangle(const std::array<Vec3, 3>& corn
 // hint, the shells around p's voxel, best-first over the occupancy pyramid) share the running
 // best and the closures that test a voxel and a triangle against it; split, they would pass that
 // state around on every call.
+double MeshGrid::distance_relative(const Vec3& origin, const Vec3& offset, double reach, uint32_t* triangle) const {
+    const TriangleMesh& m = *mesh_;
+    const Vec3 w = origin + offset;
+    double best = HUGE_VAL;
+    uint32_t at = UINT32_MAX;
+    auto consider = [&](uint32_t t) {
+        const Box3 tb = m.triangle_bounds(t);
+        if (!(point_box_distance2(w, tb.lo, tb.hi) <= reach * reach)) return;
+        const auto c = m.corners(t);
+        // Compared as distances: triangles whose squared distances differ in the last bit may tie.
+        const double d = std::sqrt(closest_point_on_triangle(offset, c[0] - origin, c[1] - origin, c[2] - origin).dist2);
+        if (d < best || (d == best && t < at)) best = d, at = t;
+    };
+    // The voxels the ball touches hold every triangle within reach; far from the mesh a scan of
+    // all triangles is cheaper. Both consider the same triangles (those whose box is in reach).
+    const Vec3 r{reach, reach, reach};
+    const auto lo = locate(w - r), hi = locate(w + r);
+    const double voxels = double(hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+    if (voxels > double(m.num_triangles())) {
+        for (uint32_t t = 0; t < m.num_triangles(); ++t) consider(t);
+    } else {
+        for (int k = lo[2]; k <= hi[2]; ++k)
+            for (int j = lo[1]; j <= hi[1]; ++j)
+                for (int i = lo[0]; i <= hi[0]; ++i) {
+                    const size_t v = index(i, j, k);
+                    for (const uint32_t* t = begin(v); t != end(v); ++t) consider(*t);
+                }
+    }
+    if (triangle) *triangle = at;
+    return best;
+}
+
 MeshGrid::Nearest MeshGrid::nearest(const Vec3& p, uint32_t hint) const {
     const TriangleMesh& M = *mesh_;
     Nearest best{UINT32_MAX, p, std::numeric_limits<double>::infinity()};

@@ -66,6 +66,13 @@ public:
     // mesh), it continues best-first over an occupancy pyramid, so far queries do not scan O((d/s)^3)
     // empty voxels. Ties go to the lowest triangle index. Safe to call from several threads.
     Nearest nearest(const Vec3& p, uint32_t hint = UINT32_MAX) const;
+    // The distance from the point origin + offset to the mesh with every triangle taken relative to
+    // `origin` (an input point), so its rounding is that of |offset| and the distances, not of the
+    // coordinates' magnitude: the least over the triangles whose box lies within `reach` of the
+    // rounded point origin + offset, which must hold the nearest one (callers take nearest()'s
+    // distance there plus how far the rounding moved the point). `triangle` (if given): the one at
+    // that distance, the lowest index among equals. +inf if no triangle is within reach.
+    double distance_relative(const Vec3& origin, const Vec3& offset, double reach, uint32_t* triangle = nullptr) const;
 
     const TriangleMesh& mesh() const { return *mesh_; }
 

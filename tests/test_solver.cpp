@@ -440,7 +440,7 @@ TEST(ConfirmTop, ClosesOverCreasesAndFindsAMissedMaximum) {
         tab.resize(1);
         tab.bound[0] = truth - 1e-7;
         const double diag = 1.5, tol = 1e-10 * diag;
-        const TopConfirmation top = confirm_top(grid, 0, tab, tab.bound[0], tol);
+        const TopConfirmation top = confirm_top(grid, 0, tab, tab.bound[0], tol, coordinate_magnitude(A, B));
         EXPECT_EQ(top.closed, top.targets);
         EXPECT_EQ(top.closed, 1u);
         EXPECT_LT(top.nodes, 2048u) << "the seams should not need splitting down to the tolerance";

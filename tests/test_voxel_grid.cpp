@@ -476,6 +476,42 @@ TEST(VoxelGrid, FarFromOrigin) {
     check_nearest(g, 0, 100, 11);
 }
 
+// distance_relative: the distance from origin + offset with every triangle taken relative to
+// origin, over the triangles within reach of the rounded point. The referee is brute force over
+// every triangle, relative to origin as well: its value, and a triangle attaining it, the lowest
+// index among equals. Points near the mesh (the voxels around them) and far from it (a scan), 3e6
+// from the origin, where an ulp of the coordinates is 5e-10.
+TEST(VoxelGrid, DistanceRelativeIsTheBruteForceDistanceInTheFrame) {
+    std::mt19937 gen(21);
+    TriangleMesh m = random_mesh(gen, 400, -1, 1, 0.3);
+    m.positions.pop_back();
+    for (Vec3& p : m.positions) p += Vec3(3e6, -1e6, 2e6);
+    const MeshGrid g(m);
+    int scanned = 0, near = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Vec3 origin = m.positions[gen() % m.positions.size()];
+        const double spread = i % 2 ? 0.3 : 40.0;
+        const Vec3 offset = rnd(gen, -spread, spread);
+        double brute = HUGE_VAL;
+        for (size_t t = 0; t < m.num_triangles(); ++t) {
+            const auto c = m.corners(t);
+            brute = std::min(brute, std::sqrt(closest_point_on_triangle(offset, c[0] - origin, c[1] - origin, c[2] - origin).dist2));
+        }
+        const MeshGrid::Nearest q = g.nearest(origin + offset);
+        const double eps = 0x1p-52 * (std::fabs(origin.x) + std::fabs(origin.y) + std::fabs(origin.z) + 1e3);
+        const double reach = std::sqrt(q.dist2) + 4 * eps;
+        (reach > 2 ? scanned : near)++;
+        uint32_t t = UINT32_MAX;
+        const double d = g.distance_relative(origin, offset, reach, &t);
+        ASSERT_EQ(d, brute) << i;
+        ASSERT_LT(t, m.num_triangles());
+        const auto c = m.corners(t);
+        EXPECT_EQ(std::sqrt(closest_point_on_triangle(offset, c[0] - origin, c[1] - origin, c[2] - origin).dist2), d) << i;
+    }
+    EXPECT_GT(scanned, 0);
+    EXPECT_GT(near, 0);
+}
+
 TEST(VoxelGrid, RealMeshNearest) {
     TriangleMesh spot = load_shared("spot.obj");
     ASSERT_EQ(spot.num_triangles(), 5856u);
