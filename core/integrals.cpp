@@ -376,69 +376,31 @@ void split_at_level(DomainMesh& m, double t2, const std::function<void(int face,
     }
 }
 
-namespace {
-// The levels' work on one mesh: face areas kept per face id until a split changes the face, and
-// the faces' ranges, so a level that cuts no face needs neither a copy nor a split.
-struct LevelClipper {
-    const DomainMesh& pristine;
-    std::unique_ptr<DomainMesh> copy;   // made at the first level that cuts a face
-    std::vector<double> area;           // per face id of the current mesh, NaN: not known
-    double last_cut = -HUGE_VAL;        // the last level (a distance) the copy was split at
-
-    explicit LevelClipper(const DomainMesh& m) : pristine(m) {}
-    const DomainMesh& mesh() const { return copy ? *copy : pristine; }
-    double face_area(int f) {
-        if ((size_t)f >= area.size()) area.resize(mesh().faces().size(), NAN);
-        if (std::isnan(area[f])) area[f] = face_area_exact(mesh(), f).value;
-        return area[f];
-    }
-    // Does some live face of the current mesh straddle t2?
-    bool cuts(double t2) {
-        const auto& F = mesh().faces();
-        for (size_t f = 1; f < F.size(); ++f) {
-            if (!F[f].alive || F[f].infinite) continue;
-            const Interval r = convex_range(F[f].poly, mesh().face_box((int)f));
-            if (r.lo <= t2 && t2 < r.hi) return true;
-        }
-        return false;
-    }
-    double above(double t2);
-};
-
-double LevelClipper::above(double t2) {
-    const double t = std::sqrt(std::max(0.0, t2));
-    if (cuts(t2)) {
-        // Nested splits are exact only while the bands between levels are much wider than the
-        // domain mesh's snap tolerance (1e-8): a band is at least as wide as the difference of
-        // the distances (d is 1-Lipschitz), so a level closer than 1e-6 to the last one cut
-        // splits a fresh copy instead.
-        if (!copy || t - last_cut < 1e-6) {
-            copy = std::make_unique<DomainMesh>(pristine);
-            area.assign(copy->faces().size(), NAN);
-        }
-        last_cut = t;
-    }
-    double sum = 0;
-    auto add = [&](int f, bool above, bool split) {
-        if (split && (size_t)f < area.size()) area[f] = NAN;  // a changed face
-        if (above) sum += face_area(f);
-    };
-    if (copy) {
-        split_at_level(*copy, t2, add);
-        return sum;
-    }
-    const auto& F = pristine.faces();  // no face straddles t2 (no copy yet): nothing to split
-    for (size_t f = 1; f < F.size(); ++f)
-        if (F[f].alive && !F[f].infinite && convex_range(F[f].poly, pristine.face_box((int)f)).lo > t2) add((int)f, true, false);
-    return sum;
-}
-}  // namespace
-
 std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels) {
+    // Each face's range and area once; a level inside a face's range costs one face_area_above.
+    struct FaceRange { int f; Interval r; double area; };
+    std::vector<FaceRange> faces;
+    const auto& F = m.faces();
+    for (size_t f = 1; f < F.size(); ++f)
+        if (F[f].alive && !F[f].infinite) faces.push_back({(int)f, convex_range(F[f].poly, m.face_box((int)f)), -1});
     std::vector<double> out(levels.size(), 0.0);
-    LevelClipper clip(m);
-    for (size_t j = 0; j < levels.size(); ++j) out[j] = clip.above(levels[j]);
+    for (size_t j = 0; j < levels.size(); ++j)
+        for (FaceRange& fr : faces) {
+            if (fr.r.hi <= levels[j]) continue;
+            if (fr.r.lo > levels[j]) {
+                if (fr.area < 0) fr.area = face_area_exact(m, fr.f).value;
+                out[j] += fr.area;
+            } else {
+                out[j] += face_area_above(m, fr.f, levels[j]);
+            }
+        }
     return out;
+}
+
+Integral curve_x_dy(const RationalCurve& c, double z0, double z1) {
+    Quadratic2 one;
+    one.f = 1;
+    return arc_integral(Antiderivative{one}, c, z0, z1);
 }
 
 }  // namespace hlens

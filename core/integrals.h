@@ -22,9 +22,8 @@
 //    form (sqrt and asinh), but it is not analytic where P = 0 touches the arc, so the line
 //    integrals use adaptive Gauss-Kronrod (7/15 points) to 1e-11 relative per face; the error
 //    returned is the sum of |K15 - G7| over the final pieces, an a-posteriori estimate, not a proof.
-//  - The area where d > t: a copy of the domain mesh is split by P - t^2 (DomainMesh::split_face,
-//    the construction's own clipping), and the areas of the positive pieces summed with the
-//    certified area integral above.
+//  - The area where d > t: Green's theorem again, along the face's arcs where P > t^2 and the conic
+//    P = t^2 inside the face (level_area.cpp), the face left as it is.
 //
 // All values here are in the target's frame units (TargetFrame::scale converts: areas by scale^2,
 // the integral of d^2 by scale^4, the integral of d by scale^3).
@@ -64,11 +63,16 @@ DomainIntegrals domain_integrals(const DomainMesh& m);
 // at or below t2 are not visited.
 void split_at_level(DomainMesh& m, double t2, const std::function<void(int face, bool above, bool split)>& visit);
 
-// Area (frame units) of the part of the target where d^2 > t2, for each t2 of `levels`
-// (ascending), by splitting one copy of the mesh by P - t2 level after level (no copy while no
-// face straddles the level; a fresh copy for a level within 1e-6 of the last one that cut, so no
-// band between levels is near the snap tolerance).
+// Area (frame units) of the part of face f where d^2 > t2, without splitting it (level_area.cpp:
+// Green's theorem along the face's arcs where d^2 > t2 and the conic d^2 = t2 inside the face).
+double face_area_above(const DomainMesh& m, int f, double t2);
+
+// The same summed over the target, for each t2 of `levels`: faces wholly above a level count their
+// area, faces wholly below nothing, and only the faces a level cuts are integrated.
 std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels);
+
+// Integral of x dy along c(z), z from z0 to z1 (z0 <= z1), certified as face_integral's arcs.
+Integral curve_x_dy(const RationalCurve& c, double z0, double z1);
 
 // Bounds of a convex quadratic (every d^2 is one) over a box: its exact range there, widened by
 // rounding; much tighter than Quadratic2::range's interval arithmetic.

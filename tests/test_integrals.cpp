@@ -16,7 +16,10 @@
 #include <hlens/mesh_io.h>
 #include <hlens/point_triangle.h>
 #include <hlens/surface_stats.h>
+#include <hlens/target_solver.h>
+#include <hlens/voxel_grid.h>
 
+#include "degenerate_pairs.h"
 #include "test_meshes.h"
 
 using namespace hlens;
@@ -291,6 +294,87 @@ TEST(SurfaceStats, EveryPointNearestToOneVertex) {
         EXPECT_NEAR(s.percentiles[k], hi, s.percentile_tolerance + 1e-12) << p;
     }
     EXPECT_LT(rel(s.max, std::sqrt(4 + h * h)), 1e-12);  // at the corners, distance 2 from the centre
+}
+
+// ---------------------------------------------------------------- the area above a level
+
+// face_area_above (level_area.cpp, Green's theorem with the face left whole) against the
+// construction's own clipping (split_face on a copy, as split_at_level does), summed over every
+// face of finished targets: coarse against fine, degenerate (coplanar, parallel, perpendicular,
+// slivers, far from the origin) and a perturbed real mesh. Levels strictly inside the target's
+// range of d^2; the split is itself only good to its snapping (~1e-7 of T'), hence the allowance.
+double split_area_above(const DomainMesh& m, double t2) {
+    DomainMesh copy(m);
+    double sum = 0;
+    split_at_level(copy, t2, [&](int f, bool above, bool) {
+        if (above) sum += face_area_exact(copy, f).value;
+    });
+    return sum;
+}
+
+void expect_level_areas_match_the_split(const VoxelGrid& grid, int side, uint32_t t, const std::string& what,
+                                        bool crossing = false) {
+    TargetSolver ts(grid, side, t);
+    ts.run();
+    const DomainMesh* m = ts.domain_mesh();
+    if (!m) return;  // a sliver target
+    double area = 0, min2 = HUGE_VAL, max2 = 0;  // max2: the domains' own maximum (update_maxima)
+    for (size_t f = 1; f < m->faces().size(); ++f)
+        if (m->faces()[f].alive && !m->faces()[f].infinite) {
+            area += face_area_exact(*m, (int)f).value;
+            max2 = std::max(max2, m->faces()[f].max_value);
+            min2 = std::min(min2, std::max(0.0, convex_range(m->faces()[f].poly, m->face_box((int)f)).lo));
+        }
+    // At the ends of the range, no split is needed to know the answer: d > 0 but on the curves where
+    // T' crosses B (surfaces that cross), and d > max nowhere (but for rounding).
+    // (Just above 0: the strip where d < t around such a curve, 1e-12 of T' wide, is less than its rounding.)
+    if (crossing)
+        for (double t2 : {0.0, 1e-24, 1e-20})
+            EXPECT_NEAR(area_above_levels(*m, {t2})[0], area, 1e-9 * area) << what << " target " << t << " t^2 " << t2;
+    EXPECT_LE(area_above_levels(*m, {max2})[0], 1e-9 * area) << what << " target " << t;
+    // Where d^2 varies over T' by less than 1e-6 of itself (near-coincident and parallel sources),
+    // the split's snapping cannot resolve the levels; the level area still follows the polynomial.
+    if (!(max2 - min2 > 1e-6 * max2)) return;
+    std::vector<double> levels;
+    for (int k = 1; k < 8; ++k) levels.push_back(min2 + (max2 - min2) * k / 8);
+    const std::vector<double> got = area_above_levels(*m, levels);
+    for (size_t k = 0; k < levels.size(); ++k) {
+        EXPECT_NEAR(got[k], split_area_above(*m, levels[k]), 1e-6 * area) << what << " target " << t << " level " << k;
+        if (k > 0) EXPECT_LE(got[k], got[k - 1] + 1e-12 * area) << what << " target " << t;  // A(t) never grows
+    }
+}
+
+TEST(LevelArea, SameAsSplittingTheDomains) {
+    for (unsigned seed = 0; seed < 60; ++seed) {
+        const DegeneratePair P = degenerate_pair(seed);
+        const VoxelGrid grid(P.a, P.b);
+        for (int side = 0; side < 2; ++side) {
+            const uint32_t n = (uint32_t)grid.mesh(side).num_triangles();
+            for (uint32_t t : {0u, n / 2, n - 1})
+                expect_level_areas_match_the_split(grid, side, t, "seed " + std::to_string(seed) + " (" + P.kind + ")");
+        }
+    }
+    auto z = [](double x, double y) { return 0.2 * std::sin(2 * x) * std::cos(3 * y); };
+    const TriangleMesh fine = height_field(32, z), coarse = height_field(5, z);
+    const VoxelGrid grid(coarse, fine);
+    for (uint32_t t = 0; t < coarse.num_triangles(); t += 3) expect_level_areas_match_the_split(grid, 0, t, "coarse", true);
+}
+
+// Levels exactly at the distance along a target edge parallel to the plane below (d^2 - t^2 is
+// rounding noise along that edge): the whole triangle above its nearest edge's distance, nothing
+// above its farthest, and the hand formula in between.
+TEST(LevelArea, LevelAlongAnEdgeParallelToThePlane) {
+    for (const auto& z : {std::array<double, 3>{0.5, 0.5, 0.9}, std::array<double, 3>{0.2, 0.9, 0.9}}) {
+        Tilted c(z[0], z[1], z[2]);
+        VoxelGrid grid(c.A, c.B);
+        TargetSolver ts(grid, 0, 0);
+        ts.run();
+        const double s = ts.frame().scale;
+        for (double t : {0.2, 0.5, 0.7, 0.9}) {
+            const double got = area_above_levels(*ts.domain_mesh(), {t * t / (s * s)})[0] * s * s;
+            EXPECT_NEAR(got, c.above(t), 1e-12 * c.area) << z[0] << " " << z[1] << " " << z[2] << " t " << t;
+        }
+    }
 }
 
 // ---------------------------------------------------------------- laws on a real pair
