@@ -100,6 +100,61 @@ int DomainMesh::add_edge(const RationalCurve& c, double z0, double z1, const Qua
     return (int)edges_.size() - 1;
 }
 
+bool DomainMesh::compact() {
+    std::vector<int> vmap(vertices_.size(), -1), emap(edges_.size(), -1), fmap(faces_.size(), -1);
+    std::vector<Vertex> V;
+    std::vector<Edge> E;
+    std::vector<Face> F;
+    std::vector<int> curved_of;
+    std::vector<CurvedArc> curved;
+    V.reserve(num_live_vertices());
+    E.reserve(num_live_edges());
+    F.reserve(num_live_faces() + 1);
+    curved_of.reserve(E.capacity());
+    for (size_t v = 0; v < vertices_.size(); ++v)
+        if (vertices_[v].alive) { vmap[v] = (int)V.size(); V.push_back(vertices_[v]); }
+    for (size_t e = 0; e < edges_.size(); ++e) {
+        if (!edges_[e].alive) continue;
+        emap[e] = (int)E.size();
+        E.push_back(edges_[e]);
+        curved_of.push_back(curved_of_[e] < 0 ? -1 : (int)curved.size());
+        if (curved_of_[e] >= 0) curved.push_back(curved_[curved_of_[e]]);
+    }
+    for (size_t f = 0; f < faces_.size(); ++f)
+        if (faces_[f].alive || f == 0) { fmap[f] = (int)F.size(); F.push_back(faces_[f]); }
+    auto hmap = [&](int h) { return h < 0 || emap[h >> 1] < 0 ? -1 : 2 * emap[h >> 1] + (h & 1); };
+    std::vector<HalfEdge> H(2 * E.size());
+    for (size_t e = 0; e < edges_.size(); ++e) {
+        if (emap[e] < 0) continue;
+        for (int k = 0; k < 2; ++k) {
+            const HalfEdge& h = half_[2 * e + k];
+            HalfEdge& n = H[2 * emap[e] + k];
+            n = {h.origin < 0 ? -1 : vmap[h.origin], hmap(h.next), hmap(h.prev), h.face < 0 ? -1 : fmap[h.face]};
+            if (n.origin < 0 || n.next < 0 || n.prev < 0 || n.face < 0) return false;
+        }
+    }
+    for (Face& f : F)
+        for (int& l : f.loops)
+            if ((l = hmap(l)) < 0) return false;
+    vertices_.swap(V);
+    edges_.swap(E);
+    half_.swap(H);
+    faces_.swap(F);
+    curved_of_.swap(curved_of);
+    curved_.swap(curved);
+    edge_alive_.assign(edges_.size(), 1);
+    live_edges_.resize(edges_.size());
+    for (size_t e = 0; e < edges_.size(); ++e) live_edges_[e] = (int)e;
+    live_vertices_.resize(vertices_.size());
+    for (size_t v = 0; v < vertices_.size(); ++v) live_vertices_[v] = (int)v;
+    live_faces_.clear();
+    for (size_t f = 1; f < faces_.size(); ++f) live_faces_.push_back((int)f);
+    face_stamp_.assign(faces_.size(), 0);
+    std::vector<uint64_t>().swap(box_stamp_);
+    std::vector<Box2>().swap(box_cache_);
+    return true;
+}
+
 const std::vector<int>& DomainMesh::live_face_ids() {
     live_faces_.erase(std::remove_if(live_faces_.begin(), live_faces_.end(), [&](int f) { return !faces_[f].alive; }),
                       live_faces_.end());

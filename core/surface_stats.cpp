@@ -52,7 +52,41 @@ std::vector<std::pair<int, double>> partial_areas(const DomainMesh& m, double sc
     return out;
 }
 
-TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::vector<double>& levels) {
+// Domain meshes kept from the first pass for the percentile passes, compacted (DomainMesh::compact:
+// the live part only, about a sixth of the construction's arrays on a coarse target), up to a
+// memory budget; the others are rebuilt (re-running the construction) in every pass that needs them.
+struct MeshCache {
+    std::vector<std::unique_ptr<DomainMesh>> mesh;
+    std::vector<double> scale;
+    std::atomic<size_t> bytes{0};
+    size_t budget = size_t(1) << 30;
+    explicit MeshCache(size_t n) : mesh(n), scale(n) {}
+    static size_t size_of(const DomainMesh& m) {  // an estimate: the main arrays and the per-edge data
+        return sizeof(DomainMesh) + m.edges().size() * (sizeof(DomainMesh::Edge) + 2 * sizeof(DomainMesh::HalfEdge) + 16) +
+               m.faces().size() * (sizeof(DomainMesh::Face) + 24) + m.vertices().size() * sizeof(DomainMesh::Vertex);
+    }
+    // Keep a compacted copy of target t's finished mesh, if it fits.
+    void keep(uint32_t t, const DomainMesh& m, double s) {
+        if (t >= mesh.size()) return;  // no percentiles asked for: nothing kept
+        auto c = std::make_unique<DomainMesh>(m);
+        if (!c->compact()) return;
+        const size_t sz = size_of(*c);
+        if (bytes.fetch_add(sz) + sz > budget) { bytes.fetch_sub(sz); return; }
+        mesh[t] = std::move(c);
+        scale[t] = s;
+    }
+    // fn(mesh, scale) with target t's finished domain mesh.
+    template <class Fn>
+    void with_mesh(const VoxelGrid& grid, int side, uint32_t t, Fn&& fn) {
+        if (mesh[t]) return fn(*mesh[t], scale[t]);
+        TargetSolver ts(grid, side, t);
+        ts.run();
+        keep(t, *ts.domain_mesh(), ts.frame().scale);
+        fn(*ts.domain_mesh(), ts.frame().scale);
+    }
+};
+
+TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::vector<double>& levels, MeshCache& cache) {
     TargetPass r;
     TargetSolver ts(grid, side, t);
     ts.run();
@@ -75,6 +109,7 @@ TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::
     r.err_d2 = di.err_d2 * s * s * s * s;
     r.err_d = di.err_d * s * s * s;
     r.partial = partial_areas(*dm, s, r.dmin, r.tri.max, levels);
+    if (r.dmin < r.tri.max) cache.keep(t, *dm, s);  // a percentile may lie in its range
     return r;
 }
 
@@ -138,35 +173,6 @@ std::vector<uint32_t> targets_in_brackets(const std::vector<TargetPass>& pass, c
     return rerun;
 }
 
-// Domain meshes kept between the passes over the targets, up to a memory budget; the others are
-// rebuilt (re-running the construction) in every pass.
-struct MeshCache {
-    std::vector<std::unique_ptr<DomainMesh>> mesh;
-    std::vector<double> scale;
-    std::atomic<size_t> bytes{0};
-    size_t budget = size_t(1) << 30;
-    explicit MeshCache(size_t n) : mesh(n), scale(n) {}
-    static size_t size_of(const DomainMesh& m) {  // an estimate, twice the main arrays
-        return 2 * (m.edges().size() * sizeof(DomainMesh::Edge) + m.half_edges().size() * sizeof(DomainMesh::HalfEdge) +
-                    m.faces().size() * (sizeof(DomainMesh::Face) + 16) + m.vertices().size() * sizeof(DomainMesh::Vertex));
-    }
-    // fn(mesh, scale) with target t's finished domain mesh.
-    template <class Fn>
-    void with_mesh(const VoxelGrid& grid, int side, uint32_t t, Fn&& fn) {
-        if (mesh[t]) return fn(*mesh[t], scale[t]);
-        TargetSolver ts(grid, side, t);
-        ts.run();
-        const size_t sz = size_of(*ts.domain_mesh());
-        if (bytes.fetch_add(sz) + sz <= budget) {
-            mesh[t] = std::make_unique<DomainMesh>(*ts.domain_mesh());
-            scale[t] = ts.frame().scale;
-        } else {
-            bytes.fetch_sub(sz);
-        }
-        fn(*ts.domain_mesh(), ts.frame().scale);
-    }
-};
-
 // One refinement pass: the targets that meet an open bracket are re-run and clipped at the few
 // levels Bracket::levels asks for (A is smooth but for small kinks, so the regula falsi point is
 // close and the two levels either side of it usually close the bracket within a few passes; the
@@ -192,7 +198,7 @@ void refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPa
 }
 
 void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, const std::vector<double>& probes,
-                 const std::vector<double>& probe_area, const StatsOptions& opt, SurfaceStats& out) {
+                 const std::vector<double>& probe_area, const StatsOptions& opt, MeshCache& cache, SurfaceStats& out) {
     std::vector<Bracket> br;
     for (double p : opt.percentiles) {
         const double goal = (1 - p / 100) * out.area;  // the area that may lie above the percentile
@@ -204,7 +210,6 @@ void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>&
         br.push_back(b);
     }
     // Narrow the brackets by passes over the targets that meet them.
-    MeshCache cache(pass.size());
     for (;;) {
         for (Bracket& b : br) b.done = b.done || b.hi - b.lo <= out.percentile_tolerance;
         const std::vector<uint32_t> rerun = targets_in_brackets(pass, br);
@@ -259,9 +264,10 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
     std::vector<TargetPass> pass(n);
+    MeshCache cache(opt.percentiles.empty() ? 0 : n);
     ProgressTicker prog(opt.progress, n);
     parallel_for(n, resolve_threads(opt.threads), opt.cancel, [&](size_t t) {
-        pass[t] = solve_target(grid, side, (uint32_t)t, levels);
+        pass[t] = solve_target(grid, side, (uint32_t)t, levels, cache);
         prog.tick();
     });
     if (opt.cancel && opt.cancel->load()) { out.cancelled = true; return out; }
@@ -301,7 +307,7 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     for (size_t j = 0; j < levels.size(); ++j) { probes.push_back(levels[j]); probe_area.push_back(A[j]); }
     const auto t1 = Clock::now();
     out.seconds_first_pass = std::chrono::duration<double>(t1 - t0).count();
-    if (!opt.percentiles.empty()) percentiles(grid, side, pass, probes, probe_area, opt, out);
+    if (!opt.percentiles.empty()) percentiles(grid, side, pass, probes, probe_area, opt, cache, out);
     out.seconds_percentiles = std::chrono::duration<double>(Clock::now() - t1).count();
     return out;
 }

@@ -8,8 +8,10 @@
 // a first pass measures that area at fixed probe levels, which brackets each percentile between
 // two probes; further passes over only the targets whose distance range meets a bracket clip them
 // at a few levels inside it (around the regula falsi point: Bracket in the .cpp), until every
-// bracket is narrower than 1e-9 of the bounding-box diagonal. Domain meshes are kept between the
-// passes up to a memory budget (about 1 GB); the others are rebuilt.
+// bracket is narrower than 1e-9 of the bounding-box diagonal. The first pass keeps the finished
+// domain meshes, compacted (DomainMesh::compact), up to a memory budget (about 1 GB); the passes
+// rebuild only the others. The area above a level is integrated without splitting a domain
+// (level_area.cpp).
 //
 // Sliver targets (height below 1e-7 of their longest edge, handled as their edges by the solver)
 // have no domain mesh: they are left out of the integrals and reported (sliver_targets,

@@ -360,6 +360,61 @@ TEST(LevelArea, SameAsSplittingTheDomains) {
     for (uint32_t t = 0; t < coarse.num_triangles(); t += 3) expect_level_areas_match_the_split(grid, 0, t, "coarse", true);
 }
 
+// DomainMesh::compact (what the statistics keep between passes): the same live faces in the same
+// order, with the same quadratics, labels, areas and level areas, the same face under random
+// points, validate() clean, and only live elements left.
+void expect_compact_is_the_same_mesh(const VoxelGrid& grid, int side, uint32_t t, const std::string& what, long& dropped) {
+    TargetSolver ts(grid, side, t);
+    ts.run();
+    const DomainMesh* m = ts.domain_mesh();
+    if (!m) return;
+    DomainMesh c(*m);
+    ASSERT_TRUE(c.compact()) << what;
+    EXPECT_EQ(c.validate(), "") << what;
+    EXPECT_EQ((int)c.edges().size(), c.num_live_edges()) << what;
+    EXPECT_EQ((int)c.vertices().size(), c.num_live_vertices()) << what;
+    EXPECT_EQ((int)c.faces().size(), c.num_live_faces() + 1) << what;
+    dropped += (long)(m->edges().size() - c.edges().size());
+    std::vector<int> live;  // the original's live inner faces, in order: c's faces 1, 2, ...
+    for (size_t f = 1; f < m->faces().size(); ++f)
+        if (m->faces()[f].alive) live.push_back((int)f);
+    ASSERT_EQ(live.size() + 1, c.faces().size()) << what;
+    for (size_t k = 0; k < live.size(); ++k) {
+        const DomainMesh::Face &a = m->faces()[live[k]], &b = c.faces()[k + 1];
+        EXPECT_TRUE(a.label == b.label && a.infinite == b.infinite) << what;
+        EXPECT_EQ(a.poly.to_string(), b.poly.to_string()) << what;
+        if (!a.infinite) EXPECT_EQ(face_area_exact(*m, live[k]).value, face_area_exact(c, (int)k + 1).value) << what;
+    }
+    const double max2 = ts.max_sq() / (ts.frame().scale * ts.frame().scale);
+    const std::vector<double> levels{0.25 * max2, 0.5 * max2, 0.9 * max2};
+    EXPECT_EQ(area_above_levels(*m, levels), area_above_levels(c, levels)) << what;
+    std::mt19937 rng(t);
+    std::uniform_real_distribution<double> U(0, 1);
+    for (int i = 0; i < 50; ++i) {
+        double u = U(rng), v = U(rng);
+        if (u + v > 1) { u = 1 - u; v = 1 - v; }
+        const auto& P = ts.frame().corners;
+        const Vec2 p = P[0] + u * (P[1] - P[0]) + v * (P[2] - P[0]);
+        const int fa = m->face_at(p), fb = c.face_at(p);
+        EXPECT_EQ(fa < 0 ? -1 : (int)(std::find(live.begin(), live.end(), fa) - live.begin()) + 1, fb) << what;
+    }
+}
+
+TEST(DomainMeshCompact, SameDomainsOnlyLiveElements) {
+    long dropped = 0;
+    for (unsigned seed = 0; seed < 30; ++seed) {
+        const DegeneratePair P = degenerate_pair(seed);
+        const VoxelGrid grid(P.a, P.b);
+        const uint32_t n = (uint32_t)grid.mesh(0).num_triangles();
+        for (uint32_t t : {0u, n / 2, n - 1}) expect_compact_is_the_same_mesh(grid, 0, t, "seed " + std::to_string(seed), dropped);
+    }
+    auto z = [](double x, double y) { return 0.2 * std::sin(2 * x) * std::cos(3 * y); };
+    const TriangleMesh fine = height_field(32, z), coarse = height_field(5, z);
+    const VoxelGrid grid(coarse, fine);
+    for (uint32_t t = 0; t < coarse.num_triangles(); t += 7) expect_compact_is_the_same_mesh(grid, 0, t, "coarse", dropped);
+    EXPECT_GT(dropped, 0);  // the constructions did leave dead edges behind
+}
+
 // Levels exactly at the distance along a target edge parallel to the plane below (d^2 - t^2 is
 // rounding noise along that edge): the whole triangle above its nearest edge's distance, nothing
 // above its farthest, and the hand formula in between.
