@@ -193,15 +193,32 @@ constexpr double eps_quad = 1e-12, eps_par = 1e-10, eps_k = 1e-14, eps_lin = 1e-
 
 void add_line(ConicDecomposition& out, Vec2 point, Vec2 dir) { out.components.push_back(line_component(point, dir)); }
 
+// The line through the root of q nearest `line.c` along the normal of `line` (q restricted to that
+// normal is a quadratic A s^2 + B s + C: its smaller root, without cancellation).
+CurveComponent refined_line(const Quadratic2& q, const CurveComponent& line) {
+    const Vec2 n = perp(line.u);
+    const double A = q.a * n.x * n.x + 2 * q.b * n.x * n.y + q.c * n.y * n.y, B = dot(q.gradient(line.c), n), C = q(line.c);
+    const double disc = B * B - 4 * A * C;
+    if (!(disc >= 0) || B == 0) return line;
+    const double s = -2 * C / (B + std::copysign(std::sqrt(disc), B));
+    return std::isfinite(s) ? line_component(line.c + s * n, line.u) : line;
+}
+
 // Central conic (both eigenvalues l1, l2 of the quadratic part away from 0, eigenvectors e1, e2;
 // b1, b2: the linear part along them): l1 X'^2 + l2 Y'^2 + k = 0 around the centre m.
 void decompose_central(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec2 e2, double b1, double b2,
                        ConicDecomposition& out) {
     double X0 = -b1 / l1, Y0 = -b2 / l2;
     double k = q.f - b1 * b1 / l1 - b2 * b2 / l2;
+    // k's own rounding: its terms are of the order of q at the centre's distance, which for a
+    // centre far from T' (the difference of two nearly parallel planes' quadratics, an exact line
+    // pair, centred 1e8 away) is far above eps_k. A k within it is 0: a point or a line pair, not
+    // an ellipse or hyperbola whose size is rounding noise (and whose points near T' would be
+    // sums of terms 1e8 times larger than they are).
+    const double k_tol = eps_k + 64 * 0x1p-52 * (std::fabs(q.f) + b1 * b1 / std::fabs(l1) + b2 * b2 / std::fabs(l2));
     Vec2 m = X0 * e1 + Y0 * e2;
     if ((l1 > 0) == (l2 > 0)) {
-        if (std::fabs(k) <= eps_k) { out.type = ConicType::Point; return; }
+        if (std::fabs(k) <= k_tol) { out.type = ConicType::Point; return; }
         if ((k > 0) == (l1 > 0)) { out.type = ConicType::Empty; return; }
         CurveComponent cc;
         cc.kind = CurveKind::Ellipse;
@@ -212,10 +229,15 @@ void decompose_central(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec2 
         out.type = ConicType::Ellipse;
         return;
     }
-    if (std::fabs(k) <= eps_k) {
+    if (std::fabs(k) <= k_tol) {
         double r = std::sqrt(-l1 / l2);
         add_line(out, m, e1 + r * e2);
         add_line(out, m, e1 - r * e2);
+        // Lines through a centre far from T' are only as accurate near T' as the centre is far
+        // (1e8 away: 1e-7 off, past what the split accepts as on the curve): each is moved onto
+        // q = 0 along its normal at its foot of the origin, where q's terms are small.
+        if (norm(m) > 1e3)
+            for (CurveComponent& line : out.components) line = refined_line(q, line);
         out.type = ConicType::LinePair;
         return;
     }

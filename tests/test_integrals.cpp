@@ -102,6 +102,40 @@ TEST(DomainSplit, LinePairCentredOnTheBoundary) {
 }
 
 // The integral of sqrt(x^2 + y^2 + h^2) over the quarter disc is (pi/2)((r^2+h^2)^1.5 - h^3)/3.
+// Two nearly parallel planes' distances (the same plane far from the origin, rounded differently):
+// the difference of their squares is the line pair (L1 - L2)(L1 + L2), one line through T' and
+// the other, and the centre, 1e8 away. Its near line must be where it is to within the split's
+// own tolerance, so that the split cuts T' along it: the positive part is where L = x + 0.93 y -
+// 0.43 > 0, T' less the corner triangle of legs 0.43 and 0.43 / 0.93. Before, the near line was
+// drawn through the far centre (1e-7 off, or a hyperbola from k's rounding) and T' was not cut.
+TEST(DomainSplit, LinePairCentredFarAway) {
+    for (double eps : {1e-8, 3e-9, 2e-9}) {
+        SCOPED_TRACE(eps);
+        // q = L * M with M = 1 + eps (0.7 x - 0.4 y) (M = 0 at distance ~1 / eps), as quadratic coefficients.
+        const double la = 1, lb = 0.93, lc = -0.43, ma = 0.7 * eps, mb = -0.4 * eps;
+        Quadratic2 q{la * ma, 0.5 * (la * mb + lb * ma), lb * mb, 0.5 * (la + lc * ma), 0.5 * (lb + lc * mb), lc};
+        q = q * 4.5e-12;  // the scale of such a difference (as in the degenerate pair that found it)
+        const ConicDecomposition dec = decompose_conic(q);
+        ASSERT_EQ(dec.type, ConicType::LinePair);
+        double nearest = HUGE_VAL;  // the near line's points at x = 0 and x = 1 are on L = 0
+        for (const CurveComponent& c : dec.components) {
+            double off = 0;
+            for (double x : {0.0, 1.0}) {
+                const double t = (x - c.c.x) / c.u.x;
+                const Vec2 p = c.at(t);
+                off = std::max(off, std::fabs(la * p.x + lb * p.y + lc) / std::hypot(la, lb));
+            }
+            nearest = std::min(nearest, off);
+        }
+        EXPECT_LT(nearest, 1e-12);
+        DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+        double pos = 0;
+        for (auto piece : m.split_face(1, q))
+            if (piece.sign > 0) pos += m.face_area(piece.face);
+        EXPECT_NEAR(pos, 0.5 - 0.43 * 0.43 / (2 * 0.93), 1e-9);
+    }
+}
+
 TEST(Integrals, SqrtOverQuarterDisc) {
     for (double h : {0.0, 0.05, 0.4}) {
         SCOPED_TRACE(h);
