@@ -16,7 +16,11 @@ namespace hlens {
 
 namespace {
 constexpr double kSnap = 1e-8;      // crossing points closer than this to a vertex become that vertex
-constexpr double kZero = 1e-12;     // |g| below this (g scaled to unit size) counts as on the curve
+constexpr double kZero = 1e-13;     // |g| below this (g scaled to unit size) counts as on the curve
+// (1e-12 until 1000 degenerate seeds showed near-coincident sources, d^2 ~ 1e-9 of T' under
+// quadratics of unit size, whose differences of 1e-12 were all counted as on the curve: a domain
+// kept a source's quadratic 5e-4 relative above d^2, seeds 519, 557, 837. Values of g are exact
+// to ~1e-15 here; 1e-13 fixed those and broke no other seed of 3000.)
 constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
 constexpr double kTwoPi = 6.283185307179586;
 
@@ -441,7 +445,7 @@ void DomainMesh::find_chords(SplitCall& s) {
 }
 
 // A hyperbola whose centre is on the curve as this split counts it (|g| <= kZero there) is the
-// line pair of its asymptotes: between the branches, 1e-6 apart at the centre, g is within kZero
+// line pair of its asymptotes: between the branches, 1e-7 apart at the centre, g is within kZero
 // of 0, and the vertices found on the curve there (a centre on the face's boundary) lie on the
 // asymptotes, not on either branch. (Two sources' edge lines that nearly meet.)
 void DomainMesh::hyperbola_as_line_pair(const Quadratic2& g, ConicDecomposition& dec) {
