@@ -67,6 +67,34 @@ void brute_lower_bounds(const TriangleMesh& A, const TriangleMesh& B, double& ve
 
 }  // namespace
 
+// The overlay's referee on zero-area sources (degenerate seed 1635: a collinear source's distance
+// came out 0.61 where it is 0.0076, so the overlay named a farther source nearest). Hand values:
+// a segment from (0,0,0) to (0,2,0) given as a, b and its middle c; a triangle shrunk to a point.
+TEST(LabelCheck, NearestFeatureOfZeroAreaTriangles) {
+    const Vec3 a{0, 0, 0}, b{0, 2, 0}, c{0, 1, 0};
+    NearestFeature f = nearest_feature({1, 0.5, 0}, a, b, c);
+    EXPECT_DOUBLE_EQ(f.d2, 1.0);  // beside the segment, nearest inside it
+    EXPECT_TRUE(f.region == Region::ab || f.region == Region::ca) << region_name(f.region);
+    f = nearest_feature({1, 3, 0}, a, b, c);
+    EXPECT_DOUBLE_EQ(f.d2, 2.0);  // past the end b
+    EXPECT_EQ(f.region, Region::b);
+    f = nearest_feature({0.3, 1.2, 0.4}, c, a, b);  // the same segment, corners in another order
+    EXPECT_NEAR(f.d2, 0.25, 1e-15);
+    {   // seed 1635's source in its target's frame: c between a and b, rounding making it a sliver
+        const Vec3 a1{0.5, 0.50000000000000011, 0.037821132479253644}, b1{0.50000000000000033, -1.5000000000000004, 0.088224657903178128},
+                   c1{0.50000000000000011, -0.5, 0.06302289519121565};
+        const Vec3 q{0.427734375, 0.072265625, 0};
+        const double t = std::clamp(dot(q - a1, b1 - a1) / norm2(b1 - a1), 0.0, 1.0);
+        EXPECT_NEAR(nearest_feature(q, a1, b1, c1).d2, norm2(q - (a1 + (b1 - a1) * t)), 1e-15);  // 0.0076
+    }
+    f = nearest_feature({0, 0, 0}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1});
+    EXPECT_DOUBLE_EQ(f.d2, 3.0);
+    // A proper triangle keeps Ericson's answer: above its inside, the height.
+    f = nearest_feature({0.2, 0.2, 0.5}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    EXPECT_DOUBLE_EQ(f.d2, 0.25);
+    EXPECT_EQ(f.region, Region::abc);
+}
+
 TEST(Degenerate, DomainsAndLabelsHoldAfterEveryInsertion) {
     int targets = 0;
     long samples = 0, ties = 0;
