@@ -215,7 +215,11 @@ void decompose_central(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec2 
     // pair, centred 1e8 away) is far above eps_k. A k within it is 0: a point or a line pair, not
     // an ellipse or hyperbola whose size is rounding noise (and whose points near T' would be
     // sums of terms 1e8 times larger than they are).
-    const double k_tol = eps_k + 64 * 0x1p-52 * (std::fabs(q.f) + b1 * b1 / std::fabs(l1) + b2 * b2 / std::fabs(l2));
+    // The eigenvalues are known to ~eps of the larger one and the b's to ~eps of the linear part,
+    // so a small eigenvalue (a nearly parabolic difference) makes its term's rounding larger still.
+    const double L = std::max(std::fabs(l1), std::fabs(l2)), lin = std::hypot(q.d, q.e);
+    auto term_err = [&](double b, double l) { return (b * b + 2 * std::fabs(b) * lin) / std::fabs(l) + L * b * b / (l * l); };
+    const double k_tol = eps_k + 64 * 0x1p-52 * (std::fabs(q.f) + term_err(b1, l1) + term_err(b2, l2));
     Vec2 m = X0 * e1 + Y0 * e2;
     if ((l1 > 0) == (l2 > 0)) {
         if (std::fabs(k) <= k_tol) { out.type = ConicType::Point; return; }
