@@ -144,6 +144,43 @@ TEST(Degenerate, DomainsAndLabelsHoldAfterEveryInsertion) {
     EXPECT_GT(ties, 0);                        // coplanar and shared features were exercised
 }
 
+// What the debugger shows: the paper's insertion, watched (every cut reported, the voxel order), as
+// a user opens the first, middle and last target at the end of its construction with the
+// overlay on: validate() and the overlay's comparison on the finished domain mesh. (After every
+// insertion this order still fails seed 23 midway, healed by later insertions; 77 fails at the
+// end, as above.)
+TEST(Degenerate, TheDebuggersConstructionHoldsAtTheEnd) {
+    int targets = 0;
+    std::vector<int> failed;
+    for (int seed = 0; seed < pair_count(); ++seed) {
+        const DegeneratePair P = degenerate_pair((unsigned)seed);
+        const VoxelGrid grid(P.a, P.b);
+        const size_t n = P.a.num_triangles();
+        std::string failure;
+        for (size_t t : {size_t(0), n / 2, n - 1}) {
+            TargetSolver ts(grid, 0, (uint32_t)t);
+            long events = 0;
+            ts.on_event([&](const Event&) { ++events; });  // watched: the paper's insertion
+            while (ts.step()) {}
+            const std::string where = "seed " + std::to_string(seed) + " (" + P.kind + ") target " + std::to_string(t);
+            if (ts.insertions() > 0 && events == 0) failure = where + ": no event reported";
+            const DomainMesh* dm = ts.domain_mesh();
+            if (!failure.empty() || !dm) { if (!failure.empty()) break; continue; }
+            const std::string v = ts.validate(true);
+            if (!v.empty()) { failure = where + ": " + v; break; }
+            const LabelCheck L = check_labels(*dm, ts.frame(), inserted_corners(ts), ts.inserted_sources());
+            if (L.disagree) { failure = where + ": " + L.first; break; }
+            ++targets;
+        }
+        if (failure.empty()) continue;
+        failed.push_back(seed);
+        if (!known_failure(seed)) ADD_FAILURE() << failure;
+        else std::printf("[ info ] known failure: %s\n", failure.c_str());
+    }
+    std::printf("[ info ] %d targets passed; %zu pairs failed\n", targets, failed.size());
+    EXPECT_GT(targets, 3 * pair_count() / 2);
+}
+
 TEST(Degenerate, PaperEqualsFastAndTheResultHoldsItsLowerBounds) {
     for (int seed = 0; seed < pair_count(); seed += 2) {
         const DegeneratePair P = degenerate_pair((unsigned)seed);
