@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 
 #include <hlens/cascade.h>
 #include <hlens/hausdorff.h>
@@ -95,9 +96,11 @@ TEST(LabelCheck, NearestFeatureOfZeroAreaTriangles) {
     EXPECT_EQ(f.region, Region::abc);
 }
 
-TEST(Degenerate, DomainsAndLabelsHoldAfterEveryInsertion) {
-    int targets = 0;
-    long samples = 0, ties = 0;
+// Runs `check` on the first, middle and last target of A of every stress pair; it returns a
+// failure ("" if none). A pair fails at its first failing target, which fails the test unless the
+// seed is listed. Returns the seeds that failed.
+using TargetCheck = std::function<std::string(const DegeneratePair&, const VoxelGrid&, uint32_t, const std::string& where)>;
+std::vector<int> check_stress_targets(const TargetCheck& check) {
     std::vector<int> failed;
     for (int seed = 0; seed < pair_count(); ++seed) {
         const DegeneratePair P = degenerate_pair((unsigned)seed);
@@ -105,41 +108,51 @@ TEST(Degenerate, DomainsAndLabelsHoldAfterEveryInsertion) {
         const size_t n = P.a.num_triangles();
         std::string failure;
         for (size_t t : {size_t(0), n / 2, n - 1}) {
-            TargetSolver ts(grid, 0, (uint32_t)t);
-            ts.validate_each_insertion(true);  // throws with the first failure
-            ts.nearest_first();                // the order the distance runs in (TargetSolver::run)
-            const std::string where = "seed " + std::to_string(seed) + " (" + P.kind + ") target " + std::to_string(t);
-            try {
-                while (failure.empty() && ts.step()) {
-                    const DomainMesh* dm = ts.domain_mesh();
-                    if (!dm) continue;
-                    LabelCheckOptions opt;
-                    opt.resolution = 48;
-                    const LabelCheck L = check_labels(*dm, ts.frame(), inserted_corners(ts), ts.inserted_sources(), opt);
-                    if (L.disagree) failure = where + " after " + std::to_string(ts.insertions()) + " insertions: " + L.first;
-                }
-            } catch (const std::logic_error& e) {
-                failure = where + ": " + e.what();
-            }
-            const DomainMesh* dm = ts.domain_mesh();
+            failure = check(P, grid, (uint32_t)t, "seed " + std::to_string(seed) + " (" + P.kind + ") target " + std::to_string(t));
             if (!failure.empty()) break;
-            if (!dm) continue;
-            const LabelCheck L = check_labels(*dm, ts.frame(), inserted_corners(ts), ts.inserted_sources());
-            if (L.disagree) { failure = where + ": " + L.first; break; }
-            ++targets;
-            samples += L.samples;
-            ties += L.ties;
         }
         if (failure.empty()) continue;
         failed.push_back(seed);
         if (!known_failure(seed)) ADD_FAILURE() << failure;
         else std::printf("[ info ] known failure: %s\n", failure.c_str());
     }
-    std::printf("[ info ] %d targets passed, %ld samples compared, %ld of them ties; %zu pairs failed\n", targets, samples,
-                ties, failed.size());
     for (int seed : kKnownFailures)
         if (seed < pair_count() && std::find(failed.begin(), failed.end(), seed) == failed.end())
             std::printf("[ info ] known failure %d passes now: remove it from kKnownFailures\n", seed);
+    return failed;
+}
+
+TEST(Degenerate, DomainsAndLabelsHoldAfterEveryInsertion) {
+    int targets = 0;
+    long samples = 0, ties = 0;
+    const std::vector<int> failed = check_stress_targets([&](const DegeneratePair&, const VoxelGrid& grid, uint32_t t,
+                                                             const std::string& where) -> std::string {
+        TargetSolver ts(grid, 0, t);
+        ts.validate_each_insertion(true);  // throws with the first failure
+        ts.nearest_first();                // the order the distance runs in (TargetSolver::run)
+        try {
+            while (ts.step()) {
+                const DomainMesh* dm = ts.domain_mesh();
+                if (!dm) continue;
+                LabelCheckOptions opt;
+                opt.resolution = 48;
+                const LabelCheck L = check_labels(*dm, ts.frame(), inserted_corners(ts), ts.inserted_sources(), opt);
+                if (L.disagree) return where + " after " + std::to_string(ts.insertions()) + " insertions: " + L.first;
+            }
+        } catch (const std::logic_error& e) {
+            return where + ": " + e.what();
+        }
+        const DomainMesh* dm = ts.domain_mesh();
+        if (!dm) return "";
+        const LabelCheck L = check_labels(*dm, ts.frame(), inserted_corners(ts), ts.inserted_sources());
+        if (L.disagree) return where + ": " + L.first;
+        ++targets;
+        samples += L.samples;
+        ties += L.ties;
+        return "";
+    });
+    std::printf("[ info ] %d targets passed, %ld samples compared, %ld of them ties; %zu pairs failed\n", targets, samples,
+                ties, failed.size());
     EXPECT_GT(targets, 3 * pair_count() / 2);  // most targets have a domain mesh (slivers do not)
     EXPECT_GT(ties, 0);                        // coplanar and shared features were exercised
 }
@@ -151,32 +164,22 @@ TEST(Degenerate, DomainsAndLabelsHoldAfterEveryInsertion) {
 // end, as above.)
 TEST(Degenerate, TheDebuggersConstructionHoldsAtTheEnd) {
     int targets = 0;
-    std::vector<int> failed;
-    for (int seed = 0; seed < pair_count(); ++seed) {
-        const DegeneratePair P = degenerate_pair((unsigned)seed);
-        const VoxelGrid grid(P.a, P.b);
-        const size_t n = P.a.num_triangles();
-        std::string failure;
-        for (size_t t : {size_t(0), n / 2, n - 1}) {
-            TargetSolver ts(grid, 0, (uint32_t)t);
-            long events = 0;
-            ts.on_event([&](const Event&) { ++events; });  // watched: the paper's insertion
-            while (ts.step()) {}
-            const std::string where = "seed " + std::to_string(seed) + " (" + P.kind + ") target " + std::to_string(t);
-            if (ts.insertions() > 0 && events == 0) failure = where + ": no event reported";
-            const DomainMesh* dm = ts.domain_mesh();
-            if (!failure.empty() || !dm) { if (!failure.empty()) break; continue; }
-            const std::string v = ts.validate(true);
-            if (!v.empty()) { failure = where + ": " + v; break; }
-            const LabelCheck L = check_labels(*dm, ts.frame(), inserted_corners(ts), ts.inserted_sources());
-            if (L.disagree) { failure = where + ": " + L.first; break; }
-            ++targets;
-        }
-        if (failure.empty()) continue;
-        failed.push_back(seed);
-        if (!known_failure(seed)) ADD_FAILURE() << failure;
-        else std::printf("[ info ] known failure: %s\n", failure.c_str());
-    }
+    const std::vector<int> failed = check_stress_targets([&](const DegeneratePair&, const VoxelGrid& grid, uint32_t t,
+                                                             const std::string& where) -> std::string {
+        TargetSolver ts(grid, 0, t);
+        long events = 0;
+        ts.on_event([&](const Event&) { ++events; });  // watched: the paper's insertion
+        while (ts.step()) {}
+        if (ts.insertions() > 0 && events == 0) return where + ": no event reported";
+        const DomainMesh* dm = ts.domain_mesh();
+        if (!dm) return "";
+        const std::string v = ts.validate(true);
+        if (!v.empty()) return where + ": " + v;
+        const LabelCheck L = check_labels(*dm, ts.frame(), inserted_corners(ts), ts.inserted_sources());
+        if (L.disagree) return where + ": " + L.first;
+        ++targets;
+        return "";
+    });
     std::printf("[ info ] %d targets passed; %zu pairs failed\n", targets, failed.size());
     EXPECT_GT(targets, 3 * pair_count() / 2);
 }
