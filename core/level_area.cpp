@@ -63,143 +63,157 @@ double component_x_dy(const CurveComponent& c, double t0, double t1) {
 // A point where F's boundary changes from counted to not (or back): where C crosses it.
 struct Crossing { Vec2 p; int comp = 0; double t = 0; };
 
+// The area of face f where g > 0, g in coordinates shifted by -o (so are all points below but
+// those handed to the mesh's queries). Two parts: F's own arcs where g > 0 (boundary()), which
+// also finds the crossings, then the pieces of C = {g = 0} between them inside F (conic()).
+struct AreaAbove {
+    const DomainMesh& m;
+    int f;
+    const Quadratic2& g;
+    Vec2 o;
+    double size, gtol;
+    std::vector<Crossing> cross;
+
+    // The loops' arcs, piece by piece; a change of "counted" along a loop is a crossing of C.
+    double boundary() {
+        double sum = 0;
+        for (int loop : m.faces()[f].loops) {
+            int first = -1, state = -1;
+            Vec2 first_point{0, 0};
+            int h = loop;
+            do {
+                sum += half_edge(h, first, state, first_point);
+                h = m.half_edges()[h].next;
+            } while (h != loop);
+            if (state >= 0 && state != first) cross.push_back({first_point});
+        }
+        if (cross.size() % 2) cross.pop_back();  // cannot happen on a closed loop; defensive
+        return sum;
+    }
+
+    // Half-edge h's pieces between the sign changes of g along it, in its direction.
+    double half_edge(int h, int& first, int& state, Vec2& first_point) {
+        const int e = h >> 1;
+        const bool fwd = !(h & 1);
+        const DomainMesh::Edge& E = m.edges()[e];
+        RationalCurve c = E.curve;
+        c.n0 = c.n0 - c.w0 * o; c.n1 = c.n1 - c.w1 * o; c.n2 = c.n2 - c.w2 * o;
+        const auto& V = m.vertices();
+        const auto& H = m.half_edges();
+        const Vec2 va = V[H[2 * e].origin].p - o, vb = V[H[2 * e + 1].origin].p - o;
+        double z[kMaxSignChangeRoots + 2], roots[kMaxSignChangeRoots];
+        int n = 0;
+        z[n++] = E.z0;
+        const int nr = sign_change_roots(c.compose(g), std::min(E.z0, E.z1), std::max(E.z0, E.z1), roots);
+        if (E.z0 <= E.z1) for (int k = 0; k < nr; ++k) z[n++] = roots[k];
+        else for (int k = nr - 1; k >= 0; --k) z[n++] = roots[k];
+        z[n++] = E.z1;
+        auto point = [&](int k) { return k == 0 ? va : k == n - 1 ? vb : c(z[k]); };
+        double sum = 0;
+        for (int j = 0; j < n - 1; ++j) {
+            const int k0 = fwd ? j : n - 1 - j, k1 = fwd ? j + 1 : n - 2 - j;  // from z[k0] to z[k1]
+            const int now = counted(c, 0.5 * (z[k0] + z[k1]), fwd);
+            const Vec2 from = point(k0);
+            if (state < 0) first = now, first_point = from;
+            else if (now != state) cross.push_back({from});
+            state = now;
+            if (!now) continue;
+            if (c.straight()) { sum += seg_x_dy(from, point(k1)); continue; }
+            const double lo = std::min(z[k0], z[k1]), hi = std::max(z[k0], z[k1]);
+            double I = curve_x_dy(c, lo, hi).value;
+            if (lo == std::min(E.z0, E.z1)) I += seg_x_dy(E.z0 <= E.z1 ? va : vb, c(lo));  // to the vertex
+            if (hi == std::max(E.z0, E.z1)) I += seg_x_dy(c(hi), E.z0 <= E.z1 ? vb : va);
+            sum += z[k1] < z[k0] ? -I : I;
+        }
+        return sum;
+    }
+
+    // Is the piece of arc c around parameter zm above t (g > 0)? Where g is noise there (C along
+    // the arc), its sign just inside F, on the half-edge's left.
+    int counted(const RationalCurve& c, double zm, bool fwd) const {
+        const Vec2 pm = c(zm);
+        double gv = g(pm);
+        if (std::fabs(gv) <= gtol) {
+            const Vec2 tan = c.derivative(zm) * (fwd ? 1.0 : -1.0);
+            const double tn = norm(tan);
+            gv = tn > 0 ? g(pm + (1e-6 * size / tn) * perp(tan)) : 0;
+            if (std::fabs(gv) <= gtol) gv = 0;
+        }
+        return gv > 0;
+    }
+
+    // Inside F at the middle of the piece ta..tb of component k: 1 or 0, or -1 where that point is
+    // along F's boundary (C running along an arc, a few ulps off it) and cannot tell.
+    int inside(const CurveComponent& k, double ta, double tb) const {
+        const Vec2 p = k.at(0.5 * (ta + tb)) + o;
+        return m.near_boundary(f, p, 1e-9 * size) ? -1 : (int)m.point_in_face(f, p);
+    }
+
+    // x dy along component k from ta to tb (with the chords from and to the crossings xa, xb),
+    // oriented with g > 0 on its left.
+    double piece(const CurveComponent& k, double ta, double tb, const Vec2* xa, const Vec2* xb) const {
+        const double tm = 0.5 * (ta + tb), eps = 1e-7 * std::max(1.0, std::fabs(tb - ta));
+        const Vec2 tan = k.at(tm + eps) - k.at(tm - eps);
+        const bool forward = dot(g.gradient(k.at(tm)), perp(tan)) > 0;
+        double I = component_x_dy(k, ta, tb);
+        if (xa) I += seg_x_dy(*xa, k.at(ta));
+        if (xb) I += seg_x_dy(k.at(tb), *xb);
+        return forward ? I : -I;
+    }
+
+    // The pieces of C inside F. Each crossing is where C passes into or out of F (the
+    // classification of F's boundary changes sign there), so the pieces between them alternate,
+    // inside and outside. An open curve comes from outside: its first piece is inside. A closed
+    // one: the first piece whose middle is clearly inside or outside sets the phase. Where the
+    // count is odd (a crossing put on the wrong component), each piece is judged by its middle.
+    double conic(const ConicDecomposition& dec) {
+        for (Crossing& x : cross) {  // each crossing on its nearest component
+            double best = HUGE_VAL;
+            for (size_t k = 0; k < dec.components.size(); ++k) {
+                const double t = dec.components[k].param_of(x.p), d = norm(dec.components[k].at(t) - x.p);
+                if (d < best) { best = d; x.comp = (int)k; x.t = t; }
+            }
+        }
+        double sum = 0;
+        std::vector<const Crossing*> on;
+        for (size_t k = 0; k < dec.components.size(); ++k) {
+            const CurveComponent& comp = dec.components[k];
+            on.clear();
+            for (const Crossing& x : cross)
+                if (x.comp == (int)k) on.push_back(&x);
+            std::sort(on.begin(), on.end(), [](const Crossing* a, const Crossing* b) { return a->t < b->t; });
+            const size_t n = on.size();
+            if (n == 0) {  // a closed curve that never meets F's boundary: wholly inside F or not at all
+                if (comp.closed() && inside(comp, 0, 2 * M_PI) == 1) sum += piece(comp, 0, 2 * M_PI, nullptr, nullptr);
+                continue;
+            }
+            // Piece i runs from crossing i to the next (around a closed curve, the last to the first).
+            const size_t pieces = comp.closed() ? n : n - 1;
+            auto ta = [&](size_t i) { return on[i]->t; };
+            auto tb = [&](size_t i) { return i + 1 < n ? on[i + 1]->t : on[0]->t + 2 * M_PI; };
+            int phase = -1;  // the parity of the inside pieces
+            if (n % 2 == 0) {
+                if (!comp.closed()) phase = 0;
+                for (size_t i = 0; i < pieces && phase < 0; ++i) {
+                    const int in = inside(comp, ta(i), tb(i));
+                    if (in >= 0) phase = (int)((i + (in ? 0 : 1)) % 2);
+                }
+            }
+            for (size_t i = 0; i < pieces; ++i) {
+                const bool in = phase >= 0 ? (int)(i % 2) == phase : inside(comp, ta(i), tb(i)) == 1;
+                if (in) sum += piece(comp, ta(i), tb(i), &on[i]->p, &on[(i + 1) % n]->p);
+            }
+        }
+        return sum;
+    }
+};
+
 // Area of face f where g > 0 (g in coordinates shifted by -o; its zero set decomposed in `dec`).
 double area_where_positive(const DomainMesh& m, int f, const Quadratic2& g, const ConicDecomposition& dec, Vec2 o,
                            double size, double gtol) {
-    const DomainMesh::Face& face = m.faces()[f];
-    const auto& V = m.vertices();
-    const auto& H = m.half_edges();
-    const double step_in = 1e-6 * size;  // where g is noise on an arc: its sign just inside F
-
-    double sum = 0;
-    std::vector<Crossing> cross;
-    for (int loop : face.loops) {
-        // Walk the loop: pieces of its arcs, each counted or not; a change is a crossing of C.
-        int first_state = -1, state = -1;
-        Vec2 first_point{0, 0};
-        int h = loop;
-        do {
-            const int e = h >> 1;
-            const bool fwd = !(h & 1);
-            const DomainMesh::Edge& E = m.edges()[e];
-            RationalCurve c = E.curve;  // shifted by -o
-            c.n0 = c.n0 - c.w0 * o; c.n1 = c.n1 - c.w1 * o; c.n2 = c.n2 - c.w2 * o;
-            const Vec2 va = V[H[2 * e].origin].p - o, vb = V[H[2 * e + 1].origin].p - o;
-            const bool straight = c.straight();
-            double z[kMaxSignChangeRoots + 2];
-            int n = 0;
-            z[n++] = E.z0;
-            double roots[kMaxSignChangeRoots];
-            const int nr = sign_change_roots(c.compose(g), std::min(E.z0, E.z1), std::max(E.z0, E.z1), roots);
-            if (E.z0 <= E.z1) for (int k = 0; k < nr; ++k) z[n++] = roots[k];
-            else for (int k = nr - 1; k >= 0; --k) z[n++] = roots[k];
-            z[n++] = E.z1;
-            auto point = [&](int k) { return k == 0 ? va : k == n - 1 ? vb : c(z[k]); };
-            // The pieces in the half-edge's direction.
-            for (int j = 0; j < n - 1; ++j) {
-                const int k0 = fwd ? j : n - 1 - j, k1 = fwd ? j + 1 : n - 2 - j;  // from z[k0] to z[k1]
-                const double zm = 0.5 * (z[k0] + z[k1]);
-                const Vec2 pm = c(zm);
-                double gv = g(pm);
-                if (std::fabs(gv) <= gtol) {  // on C: the sign just inside F (on the half-edge's left)
-                    Vec2 tan = c.derivative(zm) * (fwd ? 1.0 : -1.0);
-                    const double tn = norm(tan);
-                    gv = tn > 0 ? g(pm + (step_in / tn) * perp(tan)) : 0;
-                    if (std::fabs(gv) <= gtol) gv = 0;
-                }
-                const int now = gv > 0;
-                const Vec2 from = point(k0);
-                if (state < 0) { first_state = now; first_point = from; }
-                else if (now != state) cross.push_back({from});
-                state = now;
-                if (!now) continue;
-                double I;
-                if (straight) I = seg_x_dy(from, point(k1));
-                else {
-                    const double lo = std::min(z[k0], z[k1]), hi = std::max(z[k0], z[k1]);
-                    I = curve_x_dy(c, lo, hi).value;
-                    if (lo == std::min(E.z0, E.z1)) I += seg_x_dy(E.z0 <= E.z1 ? va : vb, c(lo));  // to the vertex
-                    if (hi == std::max(E.z0, E.z1)) I += seg_x_dy(c(hi), E.z0 <= E.z1 ? vb : va);
-                    if (z[k1] < z[k0]) I = -I;
-                }
-                sum += I;
-            }
-            h = H[h].next;
-        } while (h != loop);
-        if (state >= 0 && state != first_state) cross.push_back({first_point});
-    }
-    if (cross.size() % 2) cross.pop_back();  // cannot happen on a closed loop; defensive
-
-    // The pieces of C inside F, with g > 0 on their left.
-    for (Crossing& x : cross) {  // each crossing on its nearest component
-        double best = HUGE_VAL;
-        for (size_t k = 0; k < dec.components.size(); ++k) {
-            const double t = dec.components[k].param_of(x.p), d = norm(dec.components[k].at(t) - x.p);
-            if (d < best) { best = d; x.comp = (int)k; x.t = t; }
-        }
-    }
-    const double near = 1e-9 * size;
-    // Inside F at the middle of the piece ta..tb: 1 or 0, or -1 where that point is along F's
-    // boundary (C running along an arc, a few ulps off it) and cannot tell.
-    auto inside = [&](const CurveComponent& k, double ta, double tb) {
-        const Vec2 p = k.at(0.5 * (ta + tb)) + o;
-        return m.near_boundary(f, p, near) ? -1 : (int)m.point_in_face(f, p);
-    };
-    auto add_piece = [&](const CurveComponent& k, double ta, double tb, const Vec2* xa, const Vec2* xb) {
-        const double tm = 0.5 * (ta + tb);
-        const Vec2 pm = k.at(tm);
-        const double eps = 1e-7 * std::max(1.0, std::fabs(tb - ta));
-        const Vec2 tan = k.at(tm + eps) - k.at(tm - eps);
-        const bool forward = dot(g.gradient(pm), perp(tan)) > 0;  // g > 0 on the left going ta -> tb
-        const Vec2 pa = k.at(ta), pb = k.at(tb);
-        double I = component_x_dy(k, ta, tb);
-        if (xa) I += seg_x_dy(*xa, pa);
-        if (xb) I += seg_x_dy(pb, *xb);
-        sum += forward ? I : -I;
-    };
-    std::vector<const Crossing*> on;
-    for (size_t k = 0; k < dec.components.size(); ++k) {
-        const CurveComponent& comp = dec.components[k];
-        on.clear();
-        for (const Crossing& x : cross)
-            if (x.comp == (int)k) on.push_back(&x);
-        std::sort(on.begin(), on.end(), [](const Crossing* a, const Crossing* b) { return a->t < b->t; });
-        const size_t n = on.size();
-        if (n == 0) {
-            // A closed curve that never meets F's boundary: wholly inside F or not at all.
-            if (comp.closed() && inside(comp, 0, 2 * M_PI) == 1) add_piece(comp, 0, 2 * M_PI, nullptr, nullptr);
-            continue;
-        }
-        // Piece i runs from crossing i to the next (around a closed curve, the last to the first).
-        const size_t pieces = comp.closed() ? n : n - 1;
-        auto ends = [&](size_t i, double& ta, double& tb) {
-            ta = on[i]->t;
-            tb = i + 1 < n ? on[i + 1]->t : on[0]->t + 2 * M_PI;
-        };
-        // Each crossing is where C passes into or out of F (the classification of F's boundary
-        // changes sign there), so the pieces alternate, inside and outside. An open curve comes
-        // from outside: its first piece is inside. A closed one: the first piece whose middle is
-        // clearly inside or outside sets the phase. Where the count is odd (a crossing put on the
-        // wrong component), each piece is judged by its middle instead.
-        int phase = -1;  // the parity of the inside pieces
-        if (n % 2 == 0) {
-            if (!comp.closed()) phase = 0;
-            else
-                for (size_t i = 0; i < pieces && phase < 0; ++i) {
-                    double ta, tb;
-                    ends(i, ta, tb);
-                    const int in = inside(comp, ta, tb);
-                    if (in >= 0) phase = (int)((i + (in ? 0 : 1)) % 2);
-                }
-        }
-        for (size_t i = 0; i < pieces; ++i) {
-            double ta, tb;
-            ends(i, ta, tb);
-            const bool in = phase >= 0 ? (int)(i % 2) == phase : inside(comp, ta, tb) == 1;
-            if (in) add_piece(comp, ta, tb, &on[i]->p, &on[(i + 1) % n]->p);
-        }
-    }
-    return std::max(0.0, sum);
+    AreaAbove a{m, f, g, o, size, gtol, {}};
+    const double sum = a.boundary();
+    return std::max(0.0, sum + a.conic(dec));
 }
 
 }  // namespace
