@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "point_triangle.h"
+
 namespace hlens {
 
 namespace {
@@ -16,11 +18,9 @@ NearestFeature nearest_on_edges(const Vec3& p, const Vec3& a, const Vec3& b, con
     const Vec3* v[3] = {&a, &b, &c};
     const Region vertex[3] = {Region::a, Region::b, Region::c}, edge[3] = {Region::ab, Region::bc, Region::ca};
     for (int k = 0; k < 3; ++k) {
-        const Vec3 &s = *v[k], &e = *v[(k + 1) % 3], d = e - s;
-        const double L = norm2(d);
-        const double t = L > 0 ? std::clamp(dot(p - s, d) / L, 0.0, 1.0) : 0.0;
-        const double d2 = norm2(p - (s + d * t));
-        if (d2 < best.d2) best = {d2, t <= 0 ? vertex[k] : t >= 1 ? vertex[(k + 1) % 3] : edge[k]};
+        const Vec3 &s = *v[k], &e = *v[(k + 1) % 3];
+        const ClosestPoint cp = closest_point_on_segment(p, s, e);  // an end exactly where it clamps
+        if (cp.dist2 < best.d2) best = {cp.dist2, cp.point == s ? vertex[k] : cp.point == e ? vertex[(k + 1) % 3] : edge[k]};
     }
     return best;
 }
