@@ -376,27 +376,6 @@ void split_at_level(DomainMesh& m, double t2, const std::function<void(int face,
     }
 }
 
-std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels) {
-    // Each face's range and area once; a level inside a face's range costs one face_area_above.
-    struct FaceRange { int f; Interval r; double area; };
-    std::vector<FaceRange> faces;
-    const auto& F = m.faces();
-    for (size_t f = 1; f < F.size(); ++f)
-        if (F[f].alive && !F[f].infinite) faces.push_back({(int)f, convex_range(F[f].poly, m.face_box((int)f)), -1});
-    std::vector<double> out(levels.size(), 0.0);
-    for (size_t j = 0; j < levels.size(); ++j)
-        for (FaceRange& fr : faces) {
-            if (fr.r.hi <= levels[j]) continue;
-            if (fr.r.lo > levels[j]) {
-                if (fr.area < 0) fr.area = face_area_exact(m, fr.f).value;
-                out[j] += fr.area;
-            } else {
-                out[j] += face_area_above(m, fr.f, levels[j]);
-            }
-        }
-    return out;
-}
-
 Integral curve_x_dy(const RationalCurve& c, double z0, double z1) {
     Quadratic2 one;
     one.f = 1;

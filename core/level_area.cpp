@@ -218,9 +218,9 @@ double area_where_positive(const DomainMesh& m, int f, const Quadratic2& g, cons
 
 }  // namespace
 
-double face_area_above(const DomainMesh& m, int f, double t2) {
+// face_area_above with the face's box and its range of d^2 there (convex_range) given.
+static double area_above(const DomainMesh& m, int f, double t2, const Box2& box, const Interval& r) {
     const DomainMesh::Face& face = m.faces()[f];
-    const Box2 box = m.face_box(f);
     const Vec2 o = 0.5 * (box.lo + box.hi);  // shifted coordinates: smaller rounding
     const double size = norm(box.hi - box.lo);
     Quadratic2 g = face.poly;                // g(x + o) as a quadratic in x, minus t^2
@@ -231,7 +231,6 @@ double face_area_above(const DomainMesh& m, int f, double t2) {
     // terms' magnitude) and of d^2 itself, whose quadratic the construction derived from the
     // sources' coordinates (1e-12 of its values: parallel planes give a constant d^2 with a
     // gradient of rounding noise, which must not decide which part of F is above t).
-    const Interval r = convex_range(face.poly, box);
     const double gtol = 1e-13 * g.scale() * (1 + size) * (1 + size) + 1e-12 * (std::fabs(r.hi) + t2);
     if (r.lo > t2) return face_area_exact(m, f).value;
     if (r.hi <= t2 + gtol) return 0;  // also d = t all over F, within rounding: nothing above
@@ -264,6 +263,35 @@ double face_area_above(const DomainMesh& m, int f, double t2) {
         }
     }
     return area_where_positive(m, f, g, dec, o, size, gtol);
+}
+
+double face_area_above(const DomainMesh& m, int f, double t2) {
+    const Box2 box = m.face_box(f);
+    return area_above(m, f, t2, box, convex_range(m.faces()[f].poly, box));
+}
+
+std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels) {
+    // Each face's box, range and area once; a level inside a face's range costs one area_above.
+    struct FaceRange { int f; Box2 box; Interval r; double area; };
+    std::vector<FaceRange> faces;
+    const auto& F = m.faces();
+    for (size_t f = 1; f < F.size(); ++f)
+        if (F[f].alive && !F[f].infinite) {
+            const Box2 box = m.face_box((int)f);
+            faces.push_back({(int)f, box, convex_range(F[f].poly, box), -1});
+        }
+    std::vector<double> out(levels.size(), 0.0);
+    for (size_t j = 0; j < levels.size(); ++j)
+        for (FaceRange& fr : faces) {
+            if (fr.r.hi <= levels[j]) continue;
+            if (fr.r.lo > levels[j]) {
+                if (fr.area < 0) fr.area = face_area_exact(m, fr.f).value;
+                out[j] += fr.area;
+            } else {
+                out[j] += area_above(m, fr.f, levels[j], fr.box, fr.r);
+            }
+        }
+    return out;
 }
 
 }  // namespace hlens
