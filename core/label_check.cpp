@@ -56,9 +56,28 @@ const Quadratic2* region_quadratic(const SourceProjection& p, Region r) {
     return nullptr;
 }
 
-bool features_tie(const SourceProjection& p, Region r, const SourceProjection& q, Region s, double delta) {
-    const Quadratic2 *a = region_quadratic(p, r), *b = region_quadratic(q, s);
-    return a && b && same_quadratic(*a, *b, delta);
+std::vector<int> tie_classes(const std::vector<SourceProjection>& proj, double delta) {
+    std::vector<int> cls(8 * proj.size(), -1);
+    std::vector<std::pair<int, const Quadratic2*>> feat;  // (index, quadratic) of every region
+    for (size_t s = 0; s < proj.size(); ++s)
+        for (const SourceRegion& r : proj[s].regions) {
+            const int i = 8 * (int)s + (int)r.kind;
+            cls[i] = i;
+            feat.push_back({i, &r.poly});
+        }
+    // Union-find over the pairs that tie, each class named by its smallest index.
+    auto find = [&](int i) {
+        while (cls[i] != i) i = cls[i] = cls[cls[i]];
+        return i;
+    };
+    for (size_t a = 0; a < feat.size(); ++a)
+        for (size_t b = a + 1; b < feat.size(); ++b)
+            if (same_quadratic(*feat[a].second, *feat[b].second, delta)) {
+                const int x = find(feat[a].first), y = find(feat[b].first);
+                if (x != y) cls[std::max(x, y)] = std::min(x, y);
+            }
+    for (const auto& f : feat) cls[f.first] = find(f.first);
+    return cls;
 }
 
 std::array<Vec3, 3> source_in_frame(const TargetFrame& fr, const std::array<Vec3, 3>& c) {
@@ -125,11 +144,12 @@ void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& 
 }
 
 // 2. Compare away from changes. A different label is a tie where the two features' quadratics
-// are one polynomial, or where the labelled source's own region test names the labelled region
+// are one polynomial (or linked by a chain of such: tie_classes), or where the labelled source's own region test names the labelled region
 // at a distance equal to the nearest (to 1e-9 relative).
 void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vector<SourceProjection>& proj, double delta,
                     const std::vector<uint32_t>& ids, const LabelCheckOptions& opt, const std::vector<double>& best_d2,
                     LabelCheck& L) {
+    const std::vector<int> classes = tie_classes(proj, delta);
     for (int y = 0; y < L.height; ++y)
         for (int x = 0; x < L.width; ++x) {
             const int i = y * L.width + x;
@@ -139,7 +159,7 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
             if (L.domain[i] == L.nearest[i]) continue;
             const int s = L.domain[i] / 8, t = L.nearest[i] / 8;
             const Region r = (Region)(L.domain[i] % 8), rn = (Region)(L.nearest[i] % 8);
-            bool tie = features_tie(proj[s], r, proj[t], rn, delta);
+            bool tie = classes[L.domain[i]] >= 0 && classes[L.domain[i]] == classes[L.nearest[i]];
             if (!tie) {
                 // A degenerate source's features carry other names in its projection (a segment's
                 // ends and its one edge) than in the region test: compare the labelled quadratic's

@@ -65,9 +65,13 @@ LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& frame, const 
                         const std::vector<uint32_t>& ids, const LabelCheckOptions& opt = {});
 
 // The tie rule: the quadratic of region `r` of a projected source (null if it has no such region,
-// as a degenerate source has fewer), and whether two features' quadratics are one polynomial
-// (same_quadratic, with `delta` the largest of the inserted sources' SourceProjection::delta).
+// as a degenerate source has fewer); two features' quadratics are one polynomial by
+// same_quadratic, with `delta` the largest of the inserted sources' SourceProjection::delta.
 const Quadratic2* region_quadratic(const SourceProjection& p, Region r);
-bool features_tie(const SourceProjection& p, Region r, const SourceProjection& q, Region s, double delta);
+// The features that tie through a chain (a ~ b ~ c, though perhaps not a ~ c: the rule is not
+// transitive, and merging joins neighbouring domains link by link, so a domain labelled c may
+// cover a's region): a class per feature, indexed 8 * (position in proj) + region, -1 where a
+// source has no such region. Two features of one class count as a tie.
+std::vector<int> tie_classes(const std::vector<SourceProjection>& proj, double delta);
 
 }  // namespace hlens

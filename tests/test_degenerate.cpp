@@ -96,6 +96,30 @@ TEST(LabelCheck, NearestFeatureOfZeroAreaTriangles) {
     EXPECT_EQ(f.region, Region::abc);
 }
 
+// The tie rule through chains: a ~ b and b ~ c (within same_quadratic's 1e-11 relative) though
+// not a ~ c; merging may leave c's label over a's region (degenerate seed 2552), so the overlay and
+// validate() count the three as one class. A quadratic 1e-9 off is no tie.
+TEST(LabelCheck, TieClassesFollowChains) {
+    const Quadratic2 q{1, 0.25, 1, -0.5, -0.5, 0.5};
+    auto with_face = [](const Quadratic2& poly) {
+        SourceProjection p;
+        p.regions.push_back(SourceRegion{Region::abc, {}, poly});
+        return p;
+    };
+    Quadratic2 b = q, c = q, far = q;
+    b.f += 0.8e-11;
+    c.f += 1.6e-11;
+    far.f += 1e-9;
+    ASSERT_TRUE(same_quadratic(q, b, 0) && same_quadratic(b, c, 0));
+    ASSERT_FALSE(same_quadratic(q, c, 0));
+    const std::vector<int> cls = tie_classes({with_face(c), with_face(far), with_face(q), with_face(b)}, 0);
+    const int abc = (int)Region::abc;
+    EXPECT_EQ(cls[0 * 8 + abc], cls[2 * 8 + abc]);
+    EXPECT_EQ(cls[3 * 8 + abc], cls[2 * 8 + abc]);
+    EXPECT_NE(cls[1 * 8 + abc], cls[2 * 8 + abc]);
+    EXPECT_EQ(cls[0 * 8 + (int)Region::ab], -1);  // no such region
+}
+
 // Runs `check` on the first, middle and last target of A of every stress pair; it returns a
 // failure ("" if none). A pair fails at its first failing target, which fails the test unless the
 // seed is listed. Returns the seeds that failed.

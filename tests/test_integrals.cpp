@@ -101,6 +101,28 @@ TEST(DomainSplit, LinePairCentredOnTheBoundary) {
     }
 }
 
+// A chord whose ends lie within kCluster (1e-7) of each other can still cut off a piece that
+// reaches far from the curve: here the tip of a wedge 0.01 wide at x = 1, cut by x = 5e-6 (ends
+// 5e-8 apart, the tip 5e-6 from the line). It was dropped as "one crossing point" and the tip kept
+// the far side's sign (degenerate seeds 77 and 397: a spike of a domain 5e-6 long given to the
+// farther source). Disabled: a fix (keep such a chord unless one of the two boundary paths between
+// its ends stays within kCluster of the chord's curve) passed this, and on 3000 stress seeds cut the
+// failing pairs from 15 to 5 (after every insertion) and from 7 to 2 (at the end), but turned two
+// bunny targets (19649, 56028) from right to wrong, by validate() and a midpoint rule (README,
+// known weaknesses).
+TEST(DomainSplit, DISABLED_ShortChordAcrossASpike) {
+    DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{1, 0.01}});
+    const auto pieces = m.split_face(1, Quadratic2{0, 0, 0, -0.5, 0, 5e-6});  // 5e-6 - x
+    ASSERT_EQ(pieces.size(), 2u);
+    double pos = 0;
+    for (auto piece : pieces)
+        if (piece.sign > 0) pos += m.face_area(piece.face);
+    EXPECT_NEAR(pos, 0.5 * 5e-6 * 5e-8, 1e-3 * 0.5 * 5e-6 * 5e-8);
+    const int tip = m.face_at({2e-6, 1e-8});
+    ASSERT_GE(tip, 0);
+    EXPECT_TRUE(tip == pieces[0].face ? pieces[0].sign > 0 : pieces[1].sign > 0);
+}
+
 // The integral of sqrt(x^2 + y^2 + h^2) over the quarter disc is (pi/2)((r^2+h^2)^1.5 - h^3)/3.
 // Near-coincident sources (degenerate seeds 519, 557, 837): q_domain - q_region has coefficients of
 // unit size while its values over T' are of the order of d^2 there, 1e-9 or less. Here g =
