@@ -68,23 +68,6 @@ struct Antiderivative {
     }
 };
 
-// P(x + o.x, y + o.y) as a quadratic in (x, y): the same integrals, smaller rounding near o.
-Quadratic2 shifted(const Quadratic2& P, Vec2 o) {
-    Quadratic2 r = P;
-    r.d = P.a * o.x + P.b * o.y + P.d;
-    r.e = P.b * o.x + P.c * o.y + P.e;
-    r.f = P(o);
-    return r;
-}
-
-RationalCurve shifted(const RationalCurve& c, Vec2 o) {
-    RationalCurve r = c;
-    r.n0 = c.n0 - c.w0 * o;
-    r.n1 = c.n1 - c.w1 * o;
-    r.n2 = c.n2 - c.w2 * o;
-    return r;
-}
-
 // Integral of Q dy along the segment a -> b (Q of degree <= 3 along it: 3 Gauss points are exact).
 template <class Q>
 double segment_integral(const Q& q, Vec2 a, Vec2 b) {
@@ -268,6 +251,22 @@ EdgeEnds edge_ends(const DomainMesh& m, int e, Vec2 o) {
 }
 
 }  // namespace
+
+Quadratic2 shifted(const Quadratic2& P, Vec2 o) {
+    Quadratic2 r = P;
+    r.d = P.a * o.x + P.b * o.y + P.d;
+    r.e = P.b * o.x + P.c * o.y + P.e;
+    r.f = P(o);
+    return r;
+}
+
+RationalCurve shifted(const RationalCurve& c, Vec2 o) {
+    RationalCurve r = c;
+    r.n0 = c.n0 - c.w0 * o;
+    r.n1 = c.n1 - c.w1 * o;
+    r.n2 = c.n2 - c.w2 * o;
+    return r;
+}
 
 // The arc's integral is corrected by the chord between its vertices against the chord between
 // its curve's ends, which may differ by a snap: as in DomainMesh::loop_area, every loop is then

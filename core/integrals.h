@@ -71,6 +71,11 @@ double face_area_above(const DomainMesh& m, int f, double t2);
 // area, faces wholly below nothing, and only the faces a level cuts are integrated.
 std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels);
 
+// P(x + o.x, y + o.y) as a quadratic in (x, y), and c - o: coordinates shifted to near a face, for
+// smaller rounding there.
+Quadratic2 shifted(const Quadratic2& P, Vec2 o);
+RationalCurve shifted(const RationalCurve& c, Vec2 o);
+
 // Integral of x dy along c(z), z from z0 to z1 (z0 <= z1), certified as face_integral's arcs.
 Integral curve_x_dy(const RationalCurve& c, double z0, double z1);
 

@@ -61,7 +61,7 @@ std::vector<int> tie_classes(const std::vector<SourceProjection>& proj, double d
     std::vector<std::pair<int, const Quadratic2*>> feat;  // (index, quadratic) of every region
     for (size_t s = 0; s < proj.size(); ++s)
         for (const SourceRegion& r : proj[s].regions) {
-            const int i = 8 * (int)s + (int)r.kind;
+            const int i = feature_index(s, r.kind);
             cls[i] = i;
             feat.push_back({i, &r.poly});
         }
@@ -126,7 +126,7 @@ void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& 
             const int f = mesh.face_at(p);
             if (f < 0) continue;
             const DomainMesh::Face& F = mesh.faces()[f];
-            L.domain[i] = F.infinite || F.label.source < 0 ? -2 : slot_of(F.label.source) * 8 + (int)F.label.region;
+            L.domain[i] = F.infinite || F.label.source < 0 ? -2 : feature_index(slot_of(F.label.source), F.label.region);
             const Vec3 q(p.x, p.y, 0);
             NearestFeature best;
             int bs = -1;
@@ -137,15 +137,15 @@ void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& 
                 if (ft.d2 < best.d2) best = ft, bs = s;
             }
             if (bs < 0) continue;
-            L.nearest[i] = bs * 8 + (int)best.region;
+            L.nearest[i] = feature_index(bs, best.region);
             best_d2[i] = best.d2;
         }
 
 }
 
 // 2. Compare away from changes. A different label is a tie where the two features' quadratics
-// are one polynomial (or linked by a chain of such: tie_classes), or where the labelled source's own region test names the labelled region
-// at a distance equal to the nearest (to 1e-9 relative).
+// are one polynomial (or linked by a chain of such: tie_classes), or where the labelled source's
+// own region test names the labelled region at a distance equal to the nearest (to 1e-9 relative).
 void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vector<SourceProjection>& proj, double delta,
                     const std::vector<uint32_t>& ids, const LabelCheckOptions& opt, const std::vector<double>& best_d2,
                     LabelCheck& L) {

@@ -68,10 +68,13 @@ LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& frame, const 
 // as a degenerate source has fewer); two features' quadratics are one polynomial by
 // same_quadratic, with `delta` the largest of the inserted sources' SourceProjection::delta.
 const Quadratic2* region_quadratic(const SourceProjection& p, Region r);
+// A feature's index in LabelCheck's maps and in tie_classes: slot (position among the sources
+// given) * 8 + region.
+inline int feature_index(size_t slot, Region r) { return 8 * (int)slot + (int)r; }
 // The features that tie through a chain (a ~ b ~ c, though perhaps not a ~ c: the rule is not
 // transitive, and merging joins neighbouring domains link by link, so a domain labelled c may
-// cover a's region): a class per feature, indexed 8 * (position in proj) + region, -1 where a
-// source has no such region. Two features of one class count as a tie.
+// cover a's region): a class per feature, indexed by feature_index (slot: position in proj), -1
+// where a source has no such region. Two features of one class count as a tie.
 std::vector<int> tie_classes(const std::vector<SourceProjection>& proj, double delta);
 
 }  // namespace hlens

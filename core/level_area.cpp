@@ -96,8 +96,7 @@ struct AreaAbove {
         const int e = h >> 1;
         const bool fwd = !(h & 1);
         const DomainMesh::Edge& E = m.edges()[e];
-        RationalCurve c = E.curve;
-        c.n0 = c.n0 - c.w0 * o; c.n1 = c.n1 - c.w1 * o; c.n2 = c.n2 - c.w2 * o;
+        const RationalCurve c = shifted(E.curve, o);
         const auto& V = m.vertices();
         const auto& H = m.half_edges();
         const Vec2 va = V[H[2 * e].origin].p - o, vb = V[H[2 * e + 1].origin].p - o;
@@ -223,10 +222,8 @@ static double area_above(const DomainMesh& m, int f, double t2, const Box2& box,
     const DomainMesh::Face& face = m.faces()[f];
     const Vec2 o = 0.5 * (box.lo + box.hi);  // shifted coordinates: smaller rounding
     const double size = norm(box.hi - box.lo);
-    Quadratic2 g = face.poly;                // g(x + o) as a quadratic in x, minus t^2
-    g.d = face.poly.a * o.x + face.poly.b * o.y + face.poly.d;
-    g.e = face.poly.b * o.x + face.poly.c * o.y + face.poly.e;
-    g.f = face.poly(o) - t2;
+    Quadratic2 g = shifted(face.poly, o);    // g(x + o) as a quadratic in x, minus t^2
+    g.f -= t2;
     // How well g is known over the face: the rounding of its evaluation (a few ulps of its
     // terms' magnitude) and of d^2 itself, whose quadratic the construction derived from the
     // sources' coordinates (1e-12 of its values: parallel planes give a constant d^2 with a

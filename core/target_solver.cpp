@@ -560,7 +560,7 @@ std::string TargetSolver::validate(bool thorough) const {
     for (uint32_t s : inserted_) proj.push_back(project_source(frame_, source_corners(s), s));
     const double delta = mesh_->delta();  // the tie rule's allowance, as the mesh applied it
     const double noise = rounding_sq() / (frame_.scale * frame_.scale);  // frame units squared
-    const std::vector<int> classes = tie_classes(proj, delta);
+    const std::vector<int> classes = thorough ? tie_classes(proj, delta) : std::vector<int>();
     const auto& F = mesh_->faces();
     char buf[320];
     for (size_t f = 1; f < F.size(); ++f) {
@@ -577,14 +577,17 @@ std::string TargetSolver::validate(bool thorough) const {
         // The features tied with it (the same quadratic), through a chain (tie_classes: merging
         // joins neighbours link by link): the domain may extend over their regions. The polynomial
         // is still checked against d^2 below.
+        // Only the thorough check asks where the domain lies.
         std::vector<const SourceRegion*> tied;
-        std::vector<int> seed;
-        for (size_t s = 0; s < proj.size(); ++s)
-            for (const SourceRegion& r : proj[s].regions)
-                if (same_quadratic(r.poly, F[f].poly, delta)) seed.push_back(classes[8 * s + (int)r.kind]);
-        for (size_t s = 0; s < proj.size(); ++s)
-            for (const SourceRegion& r : proj[s].regions)
-                if (std::find(seed.begin(), seed.end(), classes[8 * s + (int)r.kind]) != seed.end()) tied.push_back(&r);
+        if (thorough) {
+            std::vector<int> seed;
+            for (size_t s = 0; s < proj.size(); ++s)
+                for (const SourceRegion& r : proj[s].regions)
+                    if (same_quadratic(r.poly, F[f].poly, delta)) seed.push_back(classes[feature_index(s, r.kind)]);
+            for (size_t s = 0; s < proj.size(); ++s)
+                for (const SourceRegion& r : proj[s].regions)
+                    if (std::find(seed.begin(), seed.end(), classes[feature_index(s, r.kind)]) != seed.end()) tied.push_back(&r);
+        }
         std::vector<Vec2> probes = probe_points(*mesh_, (int)f);
         if (!thorough && probes.size() > 1) probes.resize(1);
         for (Vec2 p : probes) {
