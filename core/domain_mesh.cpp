@@ -589,7 +589,7 @@ std::string DomainMesh::validate(double area_tol) const {
         for (int h : {(int)(2 * e), (int)(2 * e + 1)}) {
             Vec2 p = vertices_[half_[h].origin].p;
             double val = std::fabs(E.equation(p)), gn = norm(E.equation.gradient(p));
-            if (val > 1e-7 * std::max(gn, 1e-3))
+            if (val > kOffCurve * std::max(gn, 1e-3))
                 return std::snprintf(buf, sizeof buf, "edge %zu: its curve does not vanish at vertex %d (%g)", e, half_[h].origin, val), buf;
         }
         int F = half_[2 * e].face, G = half_[2 * e + 1].face;

@@ -222,6 +222,7 @@ struct DomainMesh::SplitCall {
     uint64_t sided = 0;       // the stamp of tmp.he_mark for the arcs classified by side
     int npos = 0, nneg = 0;   // boundary arcs on the positive / negative side
     bool line_like = false;   // the curve is one line or two
+    int centre = -1;          // a line pair's centre: the vertex on both lines (add_line_pair_centre)
 
     SplitCall(int face, const Quadratic2& g_unit, bool linear, DomainMesh::Scratch& scratch)
         : f(face), g(g_unit), g_linear(linear), tmp(scratch) {
@@ -462,12 +463,23 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
     double den = cross(l1.u, l2.u);
     if (den == 0) return;
     Vec2 m = l1.c + (cross(l2.c - l1.c, l2.u) / den) * l1.u;
-    bool near = false;
-    for (int v : tmp_.zverts) near |= norm(vertices_[v].p - m) <= kCluster;
-    if (!near && point_in_face(s.f, m)) {
+    // Near the centre g is a product of two small distances: within sqrt(kZero / |g''|) of it a
+    // vertex on the curve (|g| <= kZero) may lie on either line, 1e-7 from neither. The one
+    // nearest the centre is the lines' common end (bunny target 56028: the centre 2.4e-7 outside a
+    // corner cut off by an edge 9e-7 long; the vertex there, 1.4e-7 from one line, was on neither
+    // line's list, and that line's chord was lost).
+    const double hess = std::max({std::fabs(s.g.a), std::fabs(s.g.b), std::fabs(s.g.c)});
+    const double reach = std::clamp(std::sqrt(kZero / std::max(hess, 1e-300)), kCluster, 1e-6);
+    double best = reach;
+    for (int v : tmp_.zverts) {
+        const double r = norm(vertices_[v].p - m);
+        if (r <= best) best = r, s.centre = v;
+    }
+    if (best > kCluster && point_in_face(s.f, m)) {
         int vm = add_vertex(m);
         s.mark_zero(vm);
         tmp_.zverts.push_back(vm);
+        s.centre = vm;
     }
 }
 
@@ -478,9 +490,8 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
     std::vector<std::pair<double, int>>& pts = tmp_.pts;
     pts.clear();
     for (int v : tmp_.zverts) {
-        Vec2 p = vertices_[v].p;
-        double t = comp.param_of(p);
-        if (norm(comp.at(t) - p) <= 1e-7) pts.push_back({t, v});
+        const double t = comp.param_of(vertices_[v].p);
+        if (on_component(s, comp, v, t)) pts.push_back({t, v});
     }
     std::sort(pts.begin(), pts.end());
     std::vector<Chord>& cand = tmp_.cand;
@@ -505,14 +516,83 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
         if (c.va >= 0 && c.va == c.vb && !comp.closed()) continue;
         if (c.va >= 0 && !(c.t1 - c.t0 > 1e-12)) continue;
         Vec2 mid = comp.at(0.5 * (c.t0 + c.t1));
-        if (c.va >= 0 && !comp.closed() && norm(vertices_[c.va].p - vertices_[c.vb].p) <= kCluster) continue;
         if (c.va >= 0) {
-            // A piece along the face's boundary is already there; one outside is not ours.
-            if (near_boundary(f, mid, kCluster)) continue;
-            if (!point_in_face(f, mid)) continue;
+            // A piece along the face's boundary is already there (its ends one point, or its middle
+            // on the boundary), unless the boundary between its ends strays from the curve: a
+            // corner or a spike of the face beyond a short chord is a piece of its own (seeds 77,
+            // 397, 547, 1147: kept whole, it kept the farther source up to 5e-6 beyond the curve).
+            const bool short_chord = !comp.closed() && norm(vertices_[c.va].p - vertices_[c.vb].p) <= kCluster;
+            if (!point_in_face(f, mid)) continue;  // one outside is not ours
+            if ((short_chord || near_boundary(f, mid, kCluster)) && (boundary_hugs_chord(f, c, kCluster) || !chord_inside(f, c)))
+                continue;
         }
         tmp_.chords.push_back(c);
     }
+}
+
+// Vertex v, on the curve as this split counts it (|g| <= kZero, or an arc's end across g = 0 from
+// it), lies on component `comp` (its parameter t there): within 1e-7 of it, or within kOffCurve
+// and nearer to it than to the curve's other components, or the centre of a line pair
+// (add_line_pair_centre). A vertex counted on the curve but on no component ends no chord: a
+// polished vertex 1.2e-7 off a region line, marked by the arc-end rule, left the line one end and
+// the face uncut (bunny_10 target 17; the bunny pair's targets failing validate() went from 204
+// to 24 and from 240 to 24 with this and the chord rules above).
+bool DomainMesh::on_component(const SplitCall& s, const CurveComponent& comp, int v, double t) const {
+    const Vec2 p = vertices_[v].p;
+    const double d = norm(comp.at(t) - p);
+    if (d <= 1e-7 || v == s.centre) return true;
+    if (!(d <= kOffCurve)) return false;
+    for (const CurveComponent& other : tmp_.dec.components)
+        if (&other != &comp && norm(other.at(other.param_of(p)) - p) < d) return false;
+    return true;
+}
+
+// The chord's inside points (seven, evenly spaced) lie in face f: near the boundary, a chord that
+// leaves the face crosses it where no crossing was found (a cluster of vertices 1e-7 across), and
+// inserted it would not separate the face (bunny target 4951).
+bool DomainMesh::chord_inside(int f, const Chord& c) const {
+    for (int k = 1; k < 8; ++k)
+        if (!point_in_face(f, c.comp.at(c.t0 + (c.t1 - c.t0) * k / 8))) return false;
+    return true;
+}
+
+// One of the two boundary paths of face f between the chord's ends stays within tol of the chord's
+// curve (vertices and the middles of arcs): the chord adds nothing there. Ends on different loops
+// (a hole) count as hugging: such a chord was always dropped.
+bool DomainMesh::boundary_hugs_chord(int f, const Chord& c, double tol) const {
+    Vec2 poly[17];  // a closed curve's chord as a polyline: its other part may pass near the path
+    if (c.comp.closed())
+        for (int k = 0; k <= 16; ++k) poly[k] = c.comp.at(c.t0 + (c.t1 - c.t0) * k / 16);
+    auto near_curve = [&](Vec2 p) {
+        if (!c.comp.closed()) return norm(c.comp.at(c.comp.param_of(p)) - p) <= tol;
+        for (int k = 0; k < 16; ++k) {
+            const Vec2 d = poly[k + 1] - poly[k];
+            const double t = norm2(d) > 0 ? std::clamp(dot(p - poly[k], d) / norm2(d), 0.0, 1.0) : 0.0;
+            if (norm(poly[k] + t * d - p) <= tol) return true;
+        }
+        return false;
+    };
+    for (int start : faces_[f].loops) {
+        int ha = -1, hb = -1, h = start, guard = 0;
+        do {
+            if (half_[h].origin == c.va && ha < 0) ha = h;
+            if (half_[h].origin == c.vb && hb < 0) hb = h;
+            h = half_[h].next;
+        } while (h != start && ++guard < 1000000);
+        if (ha < 0 && hb < 0) continue;
+        if (ha < 0 || hb < 0) return true;
+        for (auto [from, to] : {std::pair{ha, c.vb}, std::pair{hb, c.va}}) {
+            bool hugs = true;
+            for (int k = from, n = 0; hugs && n < 1000000; k = half_[k].next, ++n) {
+                const Edge& E = edges_[k >> 1];
+                hugs = near_curve(E.curve(0.5 * (E.z0 + E.z1))) && (k == from || near_curve(vertices_[half_[k].origin].p));
+                if (target(k) == to) break;
+            }
+            if (hugs) return true;
+        }
+        return false;
+    }
+    return true;
 }
 
 // 4. Insert the chords, each as a path of well-conditioned arcs.
