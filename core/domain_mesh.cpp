@@ -414,9 +414,7 @@ bool DomainMesh::near_arc(int h, Vec2 p, double tol) const {
         if (p.x < std::min(a.x, b.x) - room || p.x > std::max(a.x, b.x) + room || p.y < std::min(a.y, b.y) - room ||
             p.y > std::max(a.y, b.y) + room)
             return false;
-        Vec2 d = b - a;
-        double t = norm2(d) > 0 ? std::clamp(dot(p - a, d) / norm2(d), 0.0, 1.0) : 0.0;
-        return norm(a + t * d - p) <= tol;
+        return segment_distance(p, a, b) <= tol;
     }
     const Vec2 gr = E.equation.gradient(p);
     const double ev = std::fabs(E.equation(p));

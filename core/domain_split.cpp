@@ -24,6 +24,10 @@ constexpr double kZero = 1e-13;     // |g| below this (g scaled to unit size) co
 constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
 constexpr double kTwoPi = 6.283185307179586;
 
+// How far p is from the point of `comp` at p's parameter (its foot on a line; near a conic, close
+// to its distance from it).
+double off_component(const CurveComponent& comp, Vec2 p) { return norm(comp.at(comp.param_of(p)) - p); }
+
 double wrap2pi(double a) {
     a = std::fmod(a, kTwoPi);
     return a < 0 ? a + kTwoPi : a;
@@ -469,7 +473,8 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
     // corner cut off by an edge 9e-7 long; the vertex there, 1.4e-7 from one line, was on neither
     // line's list, and that line's chord was lost).
     const double hess = std::max({std::fabs(s.g.a), std::fabs(s.g.b), std::fabs(s.g.c)});
-    const double reach = std::clamp(std::sqrt(kZero / std::max(hess, 1e-300)), kCluster, 1e-6);
+    // (At most kOffCurve: the vertex then ends chords of both lines within what validate() allows.)
+    const double reach = std::clamp(std::sqrt(kZero / std::max(hess, 1e-300)), kCluster, kOffCurve);
     double best = reach;
     for (int v : tmp_.zverts) {
         const double r = norm(vertices_[v].p - m);
@@ -535,15 +540,15 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
 // and nearer to it than to the curve's other components, or the centre of a line pair
 // (add_line_pair_centre). A vertex counted on the curve but on no component ends no chord: a
 // polished vertex 1.2e-7 off a region line, marked by the arc-end rule, left the line one end and
-// the face uncut (bunny_10 target 17; the bunny pair's targets failing validate() went from 204
-// to 24 and from 240 to 24 with this and the chord rules above).
+// the face uncut (bunny_10 target 17; with this and the chord rules above, the bunny pair's
+// targets failing validate() went from 204 to 6 and from 240 to 9).
 bool DomainMesh::on_component(const SplitCall& s, const CurveComponent& comp, int v, double t) const {
     const Vec2 p = vertices_[v].p;
     const double d = norm(comp.at(t) - p);
     if (d <= 1e-7 || v == s.centre) return true;
     if (!(d <= kOffCurve)) return false;
     for (const CurveComponent& other : tmp_.dec.components)
-        if (&other != &comp && norm(other.at(other.param_of(p)) - p) < d) return false;
+        if (&other != &comp && off_component(other, p) < d) return false;
     return true;
 }
 
@@ -564,12 +569,9 @@ bool DomainMesh::boundary_hugs_chord(int f, const Chord& c, double tol) const {
     if (c.comp.closed())
         for (int k = 0; k <= 16; ++k) poly[k] = c.comp.at(c.t0 + (c.t1 - c.t0) * k / 16);
     auto near_curve = [&](Vec2 p) {
-        if (!c.comp.closed()) return norm(c.comp.at(c.comp.param_of(p)) - p) <= tol;
-        for (int k = 0; k < 16; ++k) {
-            const Vec2 d = poly[k + 1] - poly[k];
-            const double t = norm2(d) > 0 ? std::clamp(dot(p - poly[k], d) / norm2(d), 0.0, 1.0) : 0.0;
-            if (norm(poly[k] + t * d - p) <= tol) return true;
-        }
+        if (!c.comp.closed()) return off_component(c.comp, p) <= tol;
+        for (int k = 0; k < 16; ++k)
+            if (segment_distance(p, poly[k], poly[k + 1]) <= tol) return true;
         return false;
     };
     for (int start : faces_[f].loops) {

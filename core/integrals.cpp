@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 #include <functional>
+#include <limits>
 #include <memory>
 
 namespace hlens {
@@ -180,7 +181,7 @@ Integral adaptive_gk(const std::function<double(double)>& f, double a, double b,
     // K15 - G7 within the rounding of the values themselves: halving cannot make it smaller (the
     // integrand is an antiderivative evaluated far from where it is small, bunny pair's nefertiti
     // target 20 halved to depth 30 for 200 s). The estimate is kept as the error.
-    const bool noise = err <= 1e3 * 2.220446049250313e-16 * mag * std::fabs(h);
+    const bool noise = err <= 1e3 * std::numeric_limits<double>::epsilon() * mag * std::fabs(h);
     if (err <= tol || noise || depth >= 30 || !(std::fabs(h) > 1e-300)) return {k * h, err};
     Integral r = adaptive_gk(f, a, m, 0.5 * tol, depth + 1);
     r += adaptive_gk(f, m, b, 0.5 * tol, depth + 1);
