@@ -275,24 +275,28 @@ void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, doubl
         cc.kind = CurveKind::Parabola;
         cc.u = e1;
         if (!(std::fabs(Xa) + std::fabs(Ya) <= 8)) {
-            // The curve's point at Y = Ym (the target's middle) nearest Xm: the root of
-            // l1 X^2 + 2 b1 X + (f + 2 b2 Ym) = 0 closest to Xm, taken without cancellation. Far
-            // from its vertex a parabola runs nearly along its axis, so X hardly changes along
-            // the target: t is rescaled so that |u| = 1.
+            // The curve's points at Y = Ym (the target's middle): the roots of
+            // l1 X^2 + 2 b1 X + (f + 2 b2 Ym) = 0, taken without cancellation. Far from its vertex
+            // a parabola runs nearly along its axis, so X hardly changes along the target: each
+            // arm there is nearly a line, and each is a component of its own, anchored at its
+            // root (t rescaled so that |u| = 1). Both arms may cross T': the difference of two
+            // sources' edge quadratics is often nearly two parallel lines (degenerate seed 2463,
+            // perpendicular sources: one arm only, and the face was not cut along the other).
             const Vec2 m{0.5, 0.25};
-            const double Xm = dot(m, e1), Ym = dot(m, e2), C = q.f + 2 * b2 * Ym;
+            const double Ym = dot(m, e2), C = q.f + 2 * b2 * Ym;
             const double disc = b1 * b1 - l1 * C;
             if (disc >= 0) {
                 const double h = -(b1 + std::copysign(std::sqrt(disc), b1));
                 const double r1 = h / l1, r2 = h != 0 ? C / h : r1;
-                Xa = std::fabs(r1 - Xm) <= std::fabs(r2 - Xm) ? r1 : r2;
-                Ya = Ym;
-                const Vec2 u = e1 + (-(l1 * Xa + b1) / b2) * e2;
-                const double k = 1 / norm(u);
-                cc.u = u * k;
-                cc.c = Xa * e1 + Ya * e2;
-                cc.v = (-l1 / (2 * b2) * k * k) * e2;
-                out.components.push_back(cc);
+                for (int arm = 0; arm < (r1 == r2 ? 1 : 2); ++arm) {
+                    const double X = arm ? r2 : r1;
+                    const Vec2 u = e1 + (-(l1 * X + b1) / b2) * e2;
+                    const double k = 1 / norm(u);
+                    cc.u = u * k;
+                    cc.c = X * e1 + Ym * e2;
+                    cc.v = (-l1 / (2 * b2) * k * k) * e2;
+                    out.components.push_back(cc);
+                }
                 out.type = ConicType::Parabola;
                 return;
             }
@@ -342,7 +346,19 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
         return;
     }
     double b1 = dot(B, e1), b2 = dot(B, e2);
-    if (std::fabs(l2) > eps_par * std::fabs(l1)) decompose_central(q, l1, l2, e1, e2, b1, b2, out);
+    // Nearly parabolic (l2 small) is still central where l2 is well above its rounding (~1e-16
+    // of l1), the centre lies near T', and the parabolic forms (which drop l2 Y^2, and b2 Y for
+    // parallel lines) would move the curve by more than 1e-9 over T' (|Y| < 2): a thin ellipse
+    // of T''s size, as the difference of a source's edge quadratic and a nearly parallel source's
+    // plane quadratic is (degenerate pair "mirror" 11642: an ellipse 3.5e-6 wide and ~1 long; as
+    // parallel lines, 1.4e-6 off, it lost the sliver where the edge was nearer, and with it the
+    // maximum). The roots X of l1 X^2 + 2 b1 X + f move by the dropped terms over |2 sqrt(disc)|.
+    bool central = std::fabs(l2) > eps_par * std::fabs(l1);
+    if (!central && std::fabs(l2) > 1e-12 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2)) {
+        const double disc = b1 * b1 - l1 * q.f, dropped = 4 * std::fabs(l2) + 4 * std::fabs(b2);
+        central = disc >= 1e-12 && dropped > 1e-9 * 2 * std::sqrt(disc);
+    }
+    if (central) decompose_central(q, l1, l2, e1, e2, b1, b2, out);
     else decompose_parabolic(q, l1, e1, e2, b1, b2, out);
 }
 

@@ -591,8 +591,23 @@ std::string DomainMesh::validate(double area_tol) const {
                 return std::snprintf(buf, sizeof buf, "edge %zu: its curve does not vanish at vertex %d (%g)", e, half_[h].origin, val), buf;
         }
         int F = half_[2 * e].face, G = half_[2 * e + 1].face;
-        if (F > 0 && G > 0 && F != G && !faces_[F].infinite && !faces_[G].infinite && same_quadratic(faces_[F].poly, faces_[G].poly, delta_))
+        if (!(F > 0 && G > 0 && F != G && !faces_[F].infinite && !faces_[G].infinite)) continue;
+        const Quadratic2 &qF = faces_[F].poly, &qG = faces_[G].poly;
+        if (same_quadratic(qF, qG, delta_))
             return std::snprintf(buf, sizeof buf, "faces %d and %d are neighbours with the same polynomial", F, G), buf;
+        // d^2 is continuous: across an arc the two domains' quadratics agree, up to the arc lying
+        // kOffCurve off where they meet, or a sliver that narrow dropped between them (where a
+        // third feature was nearer: to first order in the two gradients, to second in that
+        // feature's curvature, at most 1 in frame units for an edge or a corner region), and
+        // their rounding. A missing piece of the envelope wider than that shows as a jump
+        // (degenerate pair "mirror" 11642: an edge's sliver 3.5e-6 wide, and the maximum with it).
+        const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
+        const double jump = std::fabs(qF(m) - qG(m));
+        const double tol = kOffCurve * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + kOffCurve * kOffCurve +
+                           1e-13 * (qF.scale() + qG.scale());
+        if (jump > tol)
+            return std::snprintf(buf, sizeof buf, "faces %d and %d: d^2 jumps by %g across edge %zu (%g and %g)", F, G, jump, e,
+                                 qF(m), qG(m)), buf;
     }
     return "";
 }

@@ -467,20 +467,22 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
     double den = cross(l1.u, l2.u);
     if (den == 0) return;
     Vec2 m = l1.c + (cross(l2.c - l1.c, l2.u) / den) * l1.u;
-    // Near the centre g is a product of two small distances: within sqrt(kZero / |g''|) of it a
-    // vertex on the curve (|g| <= kZero) may lie on either line, 1e-7 from neither. The one
-    // nearest the centre is the lines' common end (bunny target 56028: the centre 2.4e-7 outside a
-    // corner cut off by an edge 9e-7 long; the vertex there, 1.4e-7 from one line, was on neither
-    // line's list, and that line's chord was lost).
-    const double hess = std::max({std::fabs(s.g.a), std::fabs(s.g.b), std::fabs(s.g.c)});
-    // (At most kOffCurve: the vertex then ends chords of both lines within what validate() allows.)
-    const double reach = std::clamp(std::sqrt(kZero / std::max(hess, 1e-300)), kCluster, kOffCurve);
-    double best = reach;
+    // Near the centre g is a product of two small distances: a vertex on the curve (|g| <= kZero)
+    // may lie on either line, 1e-7 from neither. The vertex within kOffCurve of both lines (so
+    // that validate() accepts it on both) nearest the centre is the lines' common end (bunny
+    // target 56028: the centre 2.4e-7 outside a corner cut off by an edge 9e-7 long, the vertex
+    // there 1.4e-7 from one line). Only where there is none does the centre, inside the face,
+    // become a vertex: a new vertex 1.1e-7 from a corner that is on both lines was joined to
+    // the corner by no chord (too short, along the boundary), and one line's chord ended in the
+    // middle of the face, cutting nothing (degenerate seeds 308, 2528: coplanar sources 1e10
+    // from the origin).
+    double best = HUGE_VAL;
     for (int v : tmp_.zverts) {
-        const double r = norm(vertices_[v].p - m);
-        if (r <= best) best = r, s.centre = v;
+        const Vec2 p = vertices_[v].p;
+        const double r = norm(p - m);
+        if (off_component(l1, p) <= kOffCurve && off_component(l2, p) <= kOffCurve && r <= best) best = r, s.centre = v;
     }
-    if (best > kCluster && point_in_face(s.f, m)) {
+    if (s.centre < 0 && point_in_face(s.f, m)) {
         int vm = add_vertex(m);
         s.mark_zero(vm);
         tmp_.zverts.push_back(vm);

@@ -17,6 +17,7 @@
 #include <hlens/cascade.h>
 #include <hlens/hausdorff.h>
 #include <hlens/label_check.h>
+#include <hlens/mesh_io.h>
 #include <hlens/point_triangle.h>
 #include <hlens/target_solver.h>
 #include <hlens/voxel_grid.h>
@@ -34,14 +35,15 @@ int pair_count() {
     return s ? std::atoi(s) : 200;
 }
 
-// Known failures, left in the open (README, "Known weaknesses"; issue 8 stays open): none in
-// CI's seeds. 77 failed until a short chord across a corner or a spike of the face (its ends
-// within 1e-7, the boundary between them up to 5e-6 beyond) was kept (domain_split.cpp). On 3000
-// seeds, 5 pairs fail after some insertion in the nearest-first order the distance runs in (308,
-// 2528: overlapping coplanar 1e10 from the origin; 1373, 2003, 2463: perpendicular), 2 at the end
-// of the debugger's construction (308, 2528). Any failing seed listed here is reported, any
-// other fails the test.
+// Known failures, left in the open (README, "Known weaknesses"): none. 77 failed until a short
+// chord across a corner or a spike of the face was kept (domain_split.cpp); on 3000 seeds, 308 and
+// 2528 (overlapping coplanar, 1e10 from the origin) until a line pair's centre near a corner was
+// that corner, 1373, 2003 and 2463 (perpendicular) until a nearly flat parabola kept both arms
+// (conic.cpp). Any failing seed listed here is reported, any other fails the test.
 const std::vector<int> kKnownFailures = {};
+// Seeds beyond CI's first pair_count() that once failed, run as well in the two checks of every
+// insertion and of the end (3000 seeds take several minutes; these few, seconds).
+const std::vector<int> kRegressionSeeds = {308, 1373, 2003, 2463, 2528};
 bool known_failure(int seed) { return std::find(kKnownFailures.begin(), kKnownFailures.end(), seed) != kKnownFailures.end(); }
 
 std::vector<std::array<Vec3, 3>> inserted_corners(const TargetSolver& ts) {
@@ -127,7 +129,11 @@ TEST(LabelCheck, TieClassesFollowChains) {
 using TargetCheck = std::function<std::string(const DegeneratePair&, const VoxelGrid&, uint32_t, const std::string& where)>;
 std::vector<int> check_stress_targets(const TargetCheck& check) {
     std::vector<int> failed;
-    for (int seed = 0; seed < pair_count(); ++seed) {
+    std::vector<int> seeds;
+    for (int seed = 0; seed < pair_count(); ++seed) seeds.push_back(seed);
+    for (int seed : kRegressionSeeds)
+        if (seed >= pair_count()) seeds.push_back(seed);
+    for (int seed : seeds) {
         const DegeneratePair P = degenerate_pair((unsigned)seed);
         const VoxelGrid grid(P.a, P.b);
         const size_t n = P.a.num_triangles();
@@ -398,4 +404,65 @@ TEST(Degenerate, CertifiedIntervalHoldsTheTruthInExtendedPrecision) {
         }
     }
     std::printf("[ info ] %d intervals within 1e-9 of the diagonal, %d wider (the widest %.3g of it)\n", narrow, wide, widest);
+}
+
+// Degenerate pair "mirror" 11642 of an independent generator: three triangles within 1e-4 of a
+// plane against their mirror images, 3.5e-10 apart over a mesh 1.4e-4 across. The difference of
+// an edge's quadratic and the nearly parallel mirror's is a thin ellipse of the target's size
+// (conic.cpp); taken as parallel lines, the edge's sliver 3.5e-6 wide was lost, and the result
+// came out 3.10e-10 with an interval below the truth. The oracle: the long-double samples above,
+// climbed to their local maxima (3.5132e-10 here).
+TEST(Degenerate, MirroredNearlyFlatTrianglesKeepTheirMaximum) {
+    const std::vector<Vec3> pa = {{-8.7356544500505118e-05, 3.303978726262699e-05, -2.0918147625084617e-07},
+                                  {-0.00010645863780371901, 7.4867424910677244e-06, -1.7915758474779267e-05},
+                                  {-4.635716120604335e-05, 5.0768821908317412e-05, 1.7796565865136273e-05},
+                                  {-0.00015481481164470774, 4.9432862726328342e-05, -5.2850685850746646e-06},
+                                  {-0.00013073470627412995, 6.4842954290457569e-05, 7.9828230999344434e-06},
+                                  {-8.033909642823976e-05, 1.2283606450351048e-05, -9.9458468084072044e-06},
+                                  {-0.00011628849971831231, -1.3525346293357271e-05, -3.1264055981031996e-05},
+                                  {-4.759568303527e-05, 4.0771227751496237e-06, -7.616391835396905e-06},
+                                  {-0.00012543267905242649, 4.4712279207092533e-05, -1.7707393555936555e-06}};
+    const std::vector<Vec3> pb = {{-8.7356544473704277e-05, 3.3039787332664905e-05, -2.091816062383736e-07},
+                                  {-4.635716110025706e-05, 5.0768822184765873e-05, 1.7796565352059151e-05},
+                                  {-0.00010645863786688299, 7.4867423260030055e-06, -1.7915758168425851e-05},
+                                  {-0.00015481481302630305, 4.9432859115842516e-05, -5.2850618841594961e-06},
+                                  {-8.0339093862956772e-05, 1.2283613154136069e-05, -9.9458592503601306e-06},
+                                  {-0.00013073470124104009, 6.4842967443295803e-05, 7.9827986888004965e-06},
+                                  {-0.00011628854915573873, -1.3525475486853406e-05, -3.126381620314646e-05},
+                                  {-0.00012543274481773337, 4.4712107344385694e-05, -1.7704203853847763e-06},
+                                  {-4.7595646902995738e-05, 4.0772171986496679e-06, -7.6165670815808278e-06}};
+    const std::vector<Tri> faces = {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}};
+    const TriangleMesh A = make_mesh(pa, faces), B = make_mesh(pb, faces);
+    Box3 box = A.bounds();
+    box.add(B.bounds());
+    const double diag = box.diagonal();
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        HausdorffOptions opt;
+        opt.mode = mode;
+        const HausdorffResult r = hausdorff(A, B, opt);
+        for (int dir = 0; dir < 2; ++dir) {
+            const OneSidedResult& s = dir ? r.b_to_a : r.a_to_b;
+            const TriangleMesh &from = dir ? B : A, &to = dir ? A : B;
+            long double far = 0;
+            const int n = 24;
+            for (size_t t = 0; t < from.num_triangles(); ++t) {
+                const auto c = from.corners(t);
+                long double top = -1, tu = 0, tv = 0;
+                for (int i = 0; i <= n; ++i)
+                    for (int j = 0; i + j <= n; ++j) {
+                        const long double u = (long double)i / n, v = (long double)j / n;
+                        const long double d = distance_ld(ld(c[0]) + (ld(c[1]) - ld(c[0])) * u + (ld(c[2]) - ld(c[0])) * v, to);
+                        if (d > top) top = d, tu = u, tv = v;
+                    }
+                far = std::max(far, climb(ld(c[0]), ld(c[1]), ld(c[2]), tu, tv, 1.0L / n, to));
+            }
+            const long double tol = 1e-12L * diag;
+            SCOPED_TRACE(mode_name(mode));
+            SCOPED_TRACE(dir);
+            EXPECT_GT(far, 3.5e-10L);  // the oracle found the top (the old answer was 3.10e-10)
+            EXPECT_GE((long double)s.upper + tol, far);
+            EXPECT_GE((long double)s.distance + 1e-9L * diag, far);
+            EXPECT_LE(s.upper - s.lower, 1e-9 * diag);
+        }
+    }
 }

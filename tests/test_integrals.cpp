@@ -214,6 +214,64 @@ TEST(DomainSplit, LinePairCentredFarAway) {
     }
 }
 
+// Two sources' edge quadratics whose difference is nearly two parallel lines (degenerate seed
+// 2463, perpendicular sources): g = (u - 0.1)(u - 0.35) + eps v with u = x + y/2, v = y - x/2,
+// a parabola whose vertex lies ~1e8 away and whose two arms cross the unit right triangle near
+// u = 0.1 and u = 0.35. g < 0 between them: the corner u < 0.35 (a triangle of legs 0.35 and 0.7,
+// area 0.35^2) less the corner u < 0.1 (area 0.1^2), to O(eps). Only the arm nearer the target's
+// middle was a component, and the face was cut along it alone (area 0.1225 negative).
+TEST(DomainSplit, NearlyFlatParabolaCutsAlongBothArms) {
+    for (double eps : {1e-8, -3e-9}) {
+        SCOPED_TRACE(eps);
+        const double s = 0.1 + 0.35, p = 0.1 * 0.35;
+        // u^2 - s u + p + eps v, as coefficients (a, b, c, d, e, f with the factors of 2).
+        const Quadratic2 g{1, 0.5, 0.25, 0.5 * (-s - 0.5 * eps), 0.5 * (-0.5 * s + eps), p};
+        const ConicDecomposition dec = decompose_conic(g);
+        ASSERT_EQ(dec.type, ConicType::Parabola);
+        for (double u : {0.1, 0.35})  // a point of each arm inside T' lies on a component
+            for (double y : {0.05, 0.1}) {
+                const Vec2 q{u - 0.5 * y, y};
+                double off = HUGE_VAL;
+                for (const CurveComponent& c : dec.components) off = std::min(off, norm(c.at(c.param_of(q)) - q));
+                EXPECT_LT(off, 1e-7) << "u " << u << " y " << y;
+            }
+        DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+        double neg = 0, pos = 0;
+        for (auto piece : m.split_face(1, g)) (piece.sign < 0 ? neg : pos) += m.face_area(piece.face);
+        EXPECT_NEAR(neg, 0.35 * 0.35 - 0.1 * 0.1, 1e-6);
+        EXPECT_NEAR(pos, 0.5 - (0.35 * 0.35 - 0.1 * 0.1), 1e-6);
+    }
+}
+
+// A thin ellipse of T''s size: g = (x - 1/2)^2 + eps (y - 1/2)^2 - w^2 with eps = 1e-11, w = 3e-6,
+// semi-axes w across and b = w / sqrt(eps) ~ 0.95 along (the difference of a source's edge
+// quadratic and a nearly parallel source's plane quadratic: degenerate pair "mirror" 11642). Its
+// small eigenvalue is 1e-11 of the other, and it was taken as parabolic, i.e. as the parallel
+// lines x = 1/2 +- sqrt(w^2 - eps/4): 4.5e-7 inside it at y = 1/2, and the edge's sliver, where
+// the maximum was, was lost. Inside the triangle (0,0), (1,0), (1/2,1) g < 0 on the ellipse's
+// part 0 <= y <= 1, of area int 2 w sqrt(1 - ((y - 1/2) / b)^2) dy (Simpson, long double).
+TEST(DomainSplit, ThinEllipseOfTheTargetsSize) {
+    const double eps = 1e-11, w = 3e-6, b = w / std::sqrt(eps);
+    const Quadratic2 g{1, 0, eps, -0.5, -0.5 * eps, 0.25 + 0.25 * eps - w * w};
+    const ConicDecomposition dec = decompose_conic(g);
+    ASSERT_EQ(dec.type, ConicType::Ellipse);
+    // Its half-width at heights y (its axes are the frame's): across the ellipse, where g is steep
+    // (along it, g's rounding of 1e-17 moves the ends by 1e-6).
+    const CurveComponent& c = dec.components[0];
+    const double hx = std::fabs(c.u.x) + std::fabs(c.v.x), hy = std::fabs(c.u.y) + std::fabs(c.v.y);
+    EXPECT_NEAR(c.c.x, 0.5, 1e-12);
+    for (double y : {0.2, 0.5, 0.8})
+        EXPECT_NEAR(hx * std::sqrt(1 - (y - c.c.y) * (y - c.c.y) / (hy * hy)), w * std::sqrt(1 - (y - 0.5) * (y - 0.5) / (b * b)),
+                    1e-11)
+            << "y " << y;
+    const double want = integrate([&](long double y) { return 2 * w * std::sqrt(1 - (y - 0.5L) * (y - 0.5L) / (b * b)); }, 0, 1);
+    DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0.5, 1}});
+    double neg = 0;
+    for (auto piece : m.split_face(1, g))
+        if (piece.sign < 0) neg += m.face_area(piece.face);
+    EXPECT_NEAR(neg, want, 1e-3 * want);
+}
+
 TEST(Integrals, SqrtOverQuarterDisc) {
     for (double h : {0.0, 0.05, 0.4}) {
         SCOPED_TRACE(h);
