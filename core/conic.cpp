@@ -337,7 +337,11 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     if (std::fabs(l2) > std::fabs(l1)) { std::swap(l1, l2); std::swap(e1, e2); }
     Vec2 B{q.d, q.e};
 
-    if (std::fabs(l1) <= eps_quad) {  // linear: 2 B.x + f = 0
+    // Linear: 2 B.x + f = 0, also where the quadratic part moves the line by less than 1e-10 over
+    // T' (|x| < 1.5): its terms, below 2.25 |l1|, over |grad| = 2 |B|. (Degenerate pair 112: a
+    // difference with a quadratic part of 1e-11 taken as a hyperbola centred 6e10 away, whose
+    // points near T' were cancellation noise, and a face was given whole to the farther source.)
+    if (std::fabs(l1) <= eps_quad || 2.25 * std::fabs(l1) <= 1e-10 * 2 * norm(B)) {
         double nb = norm(B);
         if (nb <= eps_lin) { out.type = std::fabs(q.f) <= eps_lin ? ConicType::Everything : ConicType::Empty; return; }
         Vec2 n = B / nb;

@@ -253,7 +253,7 @@ private:
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
-    bool snap_to_end(SplitCall& s, int e, Vec2 p);
+    bool snap_to_end(SplitCall& s, int e, Vec2 p, double tol);
     void classify_by_side(SplitCall& s);
     void find_chords(SplitCall& s);
     static void hyperbola_as_line_pair(const Quadratic2& g, ConicDecomposition& dec);

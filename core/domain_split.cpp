@@ -357,9 +357,14 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
     for (int k = 0; k < nroots; ++k) {
         const double z = roots[k];
         Vec2 p = curve(z);
-        if (snap_to_end(s, cur, p)) continue;
+        if (snap_to_end(s, cur, p, kSnap)) continue;
         if (!(z > edges_[cur].z0 && z < edges_[cur].z1)) continue;
         polish_on_two(g, eq, p);
+        // Polished onto g = 0 where g is flat (near a line pair's centre) the point may move past
+        // the arc's end: within kCluster of it, it is that end (degenerate pair "mirror" 16298: a
+        // vertex 3.4e-8 beyond a corner put the boundary out of order, the two lines' chords
+        // crossed, and the face stayed whole).
+        if (snap_to_end(s, cur, p, kCluster)) continue;
         int v = split_edge(cur, z);
         vertices_[v].p = p;
         touch_edge_faces(cur);  // the polished vertex moved off curve(z) by rounding
@@ -381,15 +386,15 @@ bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along)
     if (!(z > edges_[e].z0 && z < edges_[e].z1) || !(std::fabs(C - B * B / (4 * A)) <= kZero)) return false;
     const Vec2 p = edges_[e].curve(z);
     if (!(norm(s.g.gradient(p)) <= 1e-6)) return false;  // a tangent conic: nothing ends there
-    if (!snap_to_end(s, e, p)) s.mark_zero(split_edge(e, z));
+    if (!snap_to_end(s, e, p, kSnap)) s.mark_zero(split_edge(e, z));
     return true;
 }
 
-// A point of g = 0 on arc e within kSnap of one of its ends is that end: marked on the curve.
-bool DomainMesh::snap_to_end(SplitCall& s, int e, Vec2 p) {
+// A point of g = 0 on arc e within tol of one of its ends is that end: marked on the curve.
+bool DomainMesh::snap_to_end(SplitCall& s, int e, Vec2 p, double tol) {
     for (int end = 0; end < 2; ++end) {
         const int v = half_[2 * e + end].origin;
-        if (norm(p - vertices_[v].p) <= kSnap) {
+        if (norm(p - vertices_[v].p) <= tol) {
             s.mark_zero(v);
             ++stats_.snaps;
             return true;

@@ -243,6 +243,24 @@ TEST(DomainSplit, NearlyFlatParabolaCutsAlongBothArms) {
     }
 }
 
+// A difference whose quadratic part is 1e-11 of its linear part (degenerate pair 112, two nearly
+// parallel edges' quadratics): near T' it is the line 2 (0.404 x + y) = 0.752 to ~1e-11. As a
+// hyperbola it was centred 6e10 away, its points near T' cancellation noise; no chord was found
+// and the face went whole to one side. g < 0 below the line: the triangle of legs 0.752 / 0.808
+// and 0.752 / 2 in the unit right triangle.
+TEST(DomainSplit, NearlyLinearDifferenceIsALine) {
+    const Quadratic2 g{1.1294718179439239e-11, 1.1691207668752477e-11, -1.1290067276338792e-11, 0.40398381093384128, 1,
+                       -0.75243369069696964};
+    EXPECT_EQ(decompose_conic(g).type, ConicType::Line);
+    DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+    double neg = 0;
+    int nneg = 0;
+    for (auto piece : m.split_face(1, g))
+        if (piece.sign < 0) neg += m.face_area(piece.face), ++nneg;
+    EXPECT_EQ(nneg, 1);
+    EXPECT_NEAR(neg, 0.5 * (-g.f / (2 * g.d)) * (-g.f / (2 * g.e)), 1e-9);
+}
+
 // A thin ellipse of T''s size: g = (x - 1/2)^2 + eps (y - 1/2)^2 - w^2 with eps = 1e-11, w = 3e-6,
 // semi-axes w across and b = w / sqrt(eps) ~ 0.95 along (the difference of a source's edge
 // quadratic and a nearly parallel source's plane quadratic: degenerate pair "mirror" 11642). Its
