@@ -39,7 +39,8 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
     if (L) plain.emplace();
     // Merging looks only at edges beside a face this insertion touched: the others' neighbours
     // were unequal after the last merging, unless the tie rule's allowance has grown.
-    const uint64_t since = src.delta > delta_ ? 0 : clock_;
+    const bool grew = src.delta > delta_;
+    const uint64_t since = grew ? 0 : clock_;
     delta_ = std::max(delta_, src.delta);
     std::vector<int>& snapshot = tmp_.snapshot;
     snapshot.clear();
@@ -59,8 +60,14 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
         if (L) insert_into_face(F, src, boxes, L);
         else insert_where_nearer(F, src, boxes);
     }
-    // Nothing cut, nothing relabelled: the mesh is as the last insertion left it, merged.
-    if (!L && vertices_.size() == nv && edges_.size() == ne && relabels_ == nr) return false;
+    // Nothing cut, nothing relabelled: the mesh is as the last insertion left it, merged, unless
+    // the larger allowance (a source farther from the frame's origin) makes neighbours that were
+    // not ties before ties now: then every edge is compared once (Degenerate.LargerTieAllowance...).
+    if (!L && vertices_.size() == nv && edges_.size() == ne && relabels_ == nr) {
+        if (!grew || !merge_equal_neighbours(nullptr, 0)) return false;
+        dissolve_collinear_vertices();
+        return true;
+    }
     merge_equal_neighbours(L, since);
     dissolve_collinear_vertices();
     return true;
@@ -195,9 +202,9 @@ void DomainMesh::remove_edge(int e) {
     half_[h].face = half_[t].face = -1;
 }
 
-void DomainMesh::merge_equal_neighbours(const Listener* L, uint64_t since) {
+bool DomainMesh::merge_equal_neighbours(const Listener* L, uint64_t since) {
     auto touched = [&](int f) { return (size_t)f < face_stamp_.size() && face_stamp_[f] > since; };
-    bool changed = true;
+    bool changed = true, any = false;
     // Each pass removes at least one edge, so there are at most as many passes as edges.
     for (size_t pass = 0; changed && pass <= edges_.size(); ++pass) {
         changed = false;
@@ -218,6 +225,7 @@ void DomainMesh::merge_equal_neighbours(const Listener* L, uint64_t since) {
             for_each_half_edge(F, [&](int h) { hes.push_back(h); });
             if (G != F) for_each_half_edge(G, [&](int h) { hes.push_back(h); });
             remove_edge((int)e);
+            any = true;
             hes.erase(std::remove_if(hes.begin(), hes.end(), [&](int h) { return (h >> 1) == (int)e; }), hes.end());
             if (gone != keep) faces_[gone].alive = false, faces_[gone].loops.clear(), touch_face(gone);
             if (hes.empty()) { faces_[keep].alive = false; faces_[keep].loops.clear(); touch_face(keep); ++stats_.warnings; continue; }
@@ -234,6 +242,7 @@ void DomainMesh::merge_equal_neighbours(const Listener* L, uint64_t since) {
             changed = true;
         }
     }
+    return any;
 }
 
 void DomainMesh::replace_loop_start(int face, int from, int to) {

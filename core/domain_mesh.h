@@ -150,8 +150,9 @@ public:
     struct SplitPiece { int face; int sign; };
     std::vector<SplitPiece> split_face(int f, const Quadratic2& g);
     int split_edge(int e, double z);
-    // `since`: only edges beside a face touched after that clock value (0: every edge).
-    void merge_equal_neighbours(const Listener* listener = nullptr, uint64_t since = 0);
+    // `since`: only edges beside a face touched after that clock value (0: every edge). Returns
+    // true if an edge was removed.
+    bool merge_equal_neighbours(const Listener* listener = nullptr, uint64_t since = 0);
 
 private:
     std::vector<Vertex> vertices_;

@@ -504,5 +504,46 @@ TEST(Degenerate, MirrorWithAnEdgeInTheMirrorPlane) {
             ASSERT_NE(ts.domain_mesh(), nullptr);
             const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
             EXPECT_EQ(L.disagree, 0) << L.first;
+
+// Degenerate pair "near_coinc_far" 5830 of an independent generator: a strip of nine triangles
+// 1.3e5 from the origin against a copy 0.25 off it. The tie rule's allowance (DomainMesh::delta(),
+// the largest rounding of the inserted sources) grows when a source farther from the frame's
+// origin is inserted, and two neighbouring domains whose quadratics differ by less than the new
+// allowance are one domain. Target 0 of B, nearest first: source 3 raised the allowance but won
+// no piece of the target, and the insertion returned "unchanged" without merging, so validate()
+// found two neighbours with the same polynomial after it.
+TEST(Degenerate, LargerTieAllowanceMergesEvenWhenNothingIsCut) {
+    const std::vector<Vec3> pa = {{10738, 125856, 22855},
+                                  {10746.890963773625, 125885.83613934834, 22840.605393580849},
+                                  {10755.781927547252, 125915.67227869666, 22826.210787161701},
+                                  {10764.672891320877, 125945.50841804499, 22811.816180742549},
+                                  {10773.563855094504, 125975.34455739333, 22797.421574323398},
+                                  {10728.31653391633, 125894.78291149622, 22929.405438703594},
+                                  {10737.207497689955, 125924.61905084456, 22915.010832284443},
+                                  {10746.098461463582, 125954.45519019289, 22900.616225865291},
+                                  {10754.989425237207, 125984.29132954123, 22886.221619446143},
+                                  {10763.880389010832, 126014.12746888955, 22871.827013026992}};
+    const std::vector<Vec3> pb = {{10738.041233350394, 125856.01696571559, 22854.833215094794},
+                                  {10746.932197124019, 125885.85310506393, 22840.438608675642},
+                                  {10755.823160897646, 125915.68924441225, 22826.044002256494},
+                                  {10764.714124671271, 125945.52538376059, 22811.649395837343},
+                                  {10773.605088444898, 125975.36152310892, 22797.254789418192},
+                                  {10728.357767266723, 125894.79987721182, 22929.238653798388},
+                                  {10737.248731040349, 125924.63601656015, 22914.844047379236},
+                                  {10746.139694813975, 125954.47215590849, 22900.449440960085},
+                                  {10755.030658587601, 125984.30829525682, 22886.054834540937},
+                                  {10763.921622361226, 126014.14443460514, 22871.660228121786}};
+    const std::vector<Tri> fa = {{2, 3, 8}, {3, 4, 9}, {1, 7, 6}, {1, 7, 2}, {1, 2, 7}, {0, 6, 5}, {0, 1, 6}, {2, 8, 7}, {3, 9, 8}};
+    std::vector<Tri> fb = fa;
+    fb.push_back({2, 8, 3});
+    const TriangleMesh A = make_mesh(pa, fa), B = make_mesh(pb, fb);
+    const VoxelGrid grid(A, B, 1.0, 1);
+    for (int side = 0; side < 2; ++side)
+        for (uint32_t t = 0; t < grid.mesh(side).num_triangles(); ++t) {
+            SCOPED_TRACE(side);
+            SCOPED_TRACE(t);
+            TargetSolver ts(grid, side, t);
+            ts.validate_each_insertion(true).nearest_first();
+            EXPECT_NO_THROW(while (ts.step()) {});
         }
 }
