@@ -16,10 +16,11 @@ namespace hlens {
 struct TargetTable {
     std::vector<double> value_sq;   // exact max of d^2 over the target, -1 where not solved whole
     std::vector<Vec2> where;        // where value_sq is attained, in the target's frame (TargetSolver's)
-    std::vector<double> slack;      // sliver targets: how far the true maximum may lie above
+    std::vector<double> slack;      // sliver targets: how far the true maximum may lie above (both
+                                    // modes: fast mode sets it also for targets not solved whole)
     std::vector<double> bound;      // max distance over the target: exact, or an upper bound
     std::vector<uint8_t> exact;     // bound[t] is the exact maximum
-    double piece_upper = 0;         // max over solved pieces of sqrt(value) + slack (certificate)
+    double piece_upper = 0;         // max over solved pieces of sqrt(value) + slack (a cancelled run's upper end)
     double vertex_sq = 0;           // the farthest used vertex's squared distance (a lower bound)
     size_t solves = 0;              // exact constructions run (whole targets and pieces)
     void resize(size_t n);
@@ -27,8 +28,9 @@ struct TargetTable {
 };
 
 // Fills `out` for mesh `side` of the grid measured against the other mesh. Every target whose
-// exact maximum can equal the result (within a tie margin far above rounding) is solved whole,
-// exactly as paper mode solves it, so the result and its witness are paper mode's.
+// exact maximum can equal the result (within a tie margin far above rounding of the largest exact
+// value, and of the lower bound L the cascade reached) is solved whole, exactly as paper mode
+// solves it, so the result, its witness and the targets tied with it are paper mode's.
 void cascade_targets(const VoxelGrid& grid, int side, const HausdorffOptions& opt, TargetTable& out);
 
 // The farthest used vertex of mesh `side` from the other mesh (squared), and for each vertex its

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cascade.h"
 #include "confirm_top.h"
@@ -75,13 +76,18 @@ double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const 
 }
 
 // upper: what the confirmation of the top left (confirm_top.cpp: a bound without the domain
-// meshes, over every target that can reach the result), and the sliver pieces' values with their
-// slack. Over closed targets its rounding is relative to the targets' sizes and the distances, not
-// to the coordinates.
-// Targets left open (not closed within the subdivision's budget) keep the domain meshes' maximum,
-// widened by a bound on the rounding of coordinates, as a cancelled run has it.
-double upper_end(const TargetTable& tab, const TopConfirmation& top, double distance, double coord, const Box3& box) {
-    double upper = std::max({distance, tab.piece_upper, top.upper});
+// meshes, over every target that can reach the result). Over closed targets its rounding is
+// relative to the targets' sizes and the distances, not to the coordinates.
+// A sliver target's true maximum may lie above its value by its slack (its height, at most 1e-7 of
+// its longest edge): the confirmation's reach (1e-6 of the target's size, plus the slack) takes in
+// every sliver that can reach the result, in either mode (fast mode's table has the slack of the
+// targets it did not solve whole), and bounds it by subdivision of the triangle itself. So the
+// sliver pieces' values with their slack (tab.piece_upper, fast mode only: the interval was looser
+// than paper mode's) are not needed here; a cancelled run, which has no confirmation, uses them.
+// Targets left open (not closed within the subdivision's budget) keep the domain meshes' maximum
+// and slack, widened by a bound on the rounding of coordinates, as a cancelled run has it.
+double upper_end(const TopConfirmation& top, double distance, double coord, const Box3& box) {
+    double upper = std::max(distance, top.upper);
     if (top.open_upper >= 0) upper = std::max(upper, top.open_upper + coordinate_allowance(top.open_upper, coord, box));
     return upper * (1 + 1e-15);
 }
@@ -93,6 +99,43 @@ double cancelled_upper_end(const TargetTable& tab, size_t n, double distance, do
     for (size_t t = 0; t < n; ++t)  // a sliver target's value may be short by its height
         if (tab.slack[t] > 0 && tab.value_sq[t] >= 0) upper = std::max(upper, std::sqrt(tab.value_sq[t]) + tab.slack[t]);
     return upper + coordinate_allowance(distance, coord, box);
+}
+
+// At most this many targets are polished (a fan of triangles round the witness vertex has a few).
+constexpr size_t kPolish = 16;
+
+// The witness polished (polish_witness): a domain mesh's maximum may sit ~1e-7 of its target's size
+// off the true one, and where the maximum is at or near a vertex shared by several targets, the
+// farther point may lie in a neighbour of the witness target, beyond the witness's own local search
+// (independent pair 11608: 2.5e-9 farther, 6e-6 from the shared vertex, in the witness's
+// neighbour). So every target whose exact value ties with the best (tie_threshold_sq) is polished:
+// fast mode solves all of them whole (cascade.cpp), so the set, its order (value descending, lowest
+// index among equals) and the result are paper mode's. At most kPolish of them, in that order. True
+// (the point origin + offset and its target) if one is farther than `value` by more than rounding;
+// the farthest, the first in the order among equals.
+bool polish_ties(const VoxelGrid& grid, int side, const TargetTable& tab, size_t n, double value, double tol, double coord,
+                 Vec3& origin, Vec3& offset, uint32_t& target) {
+    const double tie = tie_threshold_sq(value * value, coord);
+    std::vector<uint32_t> ties;
+    for (uint32_t t = 0; t < n; ++t)
+        if (tab.value_sq[t] >= 0 && tab.value_sq[t] >= tie) ties.push_back(t);
+    std::stable_sort(ties.begin(), ties.end(), [&](uint32_t x, uint32_t y) { return tab.value_sq[x] > tab.value_sq[y]; });
+    if (ties.size() > kPolish) ties.resize(kPolish);
+    bool found = false;
+    double best = value;
+    for (uint32_t t : ties) {
+        const Vec3 point = TargetFrame::make(grid.mesh(side).corners(t)).to_world(tab.where[t]);
+        Vec3 o, off;
+        double polished;
+        if (polish_witness(grid, side, t, point, value, tol, coord, o, off, polished) && polished > best) {
+            best = polished;
+            origin = o;
+            offset = off;
+            target = t;
+            found = true;
+        }
+    }
+    return found;
 }
 
 }  // namespace
@@ -119,22 +162,22 @@ void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode,
     const TopConfirmation top = confirm_top(grid, side, tab, r.distance, tol, coord);
     r.lower = lower_end(grid, side, tab, box, r);
     Vec3 origin = top.origin, offset = top.offset;
-    double polished;
+    uint32_t raised_target = top.target;
     bool raised = top.raised;
-    if (!raised) raised = polish_witness(grid, side, r.target, r.from_point, r.distance, tol, coord, origin, offset, polished);
+    if (!raised) raised = polish_ties(grid, side, tab, n, r.distance, tol, coord, origin, offset, raised_target);
     if (raised) {
         Vec3 to_point;
         const double d = witness_distance(grid.of(1 - side), origin, offset, to_point);
         const double lower = d - witness_rounding(d, box);
         if (lower > r.lower) {
-            if (top.raised) r.target = top.target;
+            r.target = raised_target;
             r.distance = d;
             r.lower = std::min(d, lower);
             r.from_point = origin + offset;
             r.to_point = to_point;
         }
     }
-    r.upper = upper_end(tab, top, r.distance, coord, box);
+    r.upper = upper_end(top, r.distance, coord, box);
     // A one-sided distance is never below its farthest vertex's distance.
     // (The vertices' distances were taken in world coordinates: rounding of their magnitude.)
     if (!(r.upper + 1e-13 * coord >= std::sqrt(tab.vertex_sq)))

@@ -433,11 +433,13 @@ void TargetSolver::degenerate_maximum() {
     }
 }
 
-double TargetSolver::slack() const {
-    if (!frame_.degenerate) return 0;
+double TargetSolver::slack() const { return sliver_slack(frame_); }
+
+double TargetSolver::sliver_slack(const TargetFrame& frame) {
+    if (!frame.degenerate) return 0;
     double h = 0;  // the height of the sliver over its longest edge (world units)
-    for (const Vec2& c : frame_.corners) h = std::max(h, std::fabs(c.y));
-    return h * frame_.scale;
+    for (const Vec2& c : frame.corners) h = std::max(h, std::fabs(c.y));
+    return h * frame.scale;
 }
 
 double TargetSolver::rounding_sq() const {

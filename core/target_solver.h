@@ -113,6 +113,8 @@ public:
     // For a sliver target (handled as its three edges): how far the true maximum distance may lie
     // above max_sq()'s root. Zero for every other target.
     double slack() const;
+    // The same for a target with frame `frame`, without solving it.
+    static double sliver_slack(const TargetFrame& frame);
     // How far max_sq() may be off by the rounding of the domains' quadratics (world units squared):
     // tiny against max_sq() unless the meshes (nearly) coincide, where d^2 is a small difference of
     // large terms.
