@@ -361,10 +361,11 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
         if (!(z > edges_[cur].z0 && z < edges_[cur].z1)) continue;
         polish_on_two(g, eq, p);
         // Polished onto g = 0 where g is flat (near a line pair's centre) the point may move past
-        // the arc's end: within kCluster of it, it is that end (degenerate pair "mirror" 16298: a
+        // the end of a straight arc: then it is that end (degenerate pair "mirror" 16298: a
         // vertex 3.4e-8 beyond a corner put the boundary out of order, the two lines' chords
-        // crossed, and the face stayed whole).
-        if (snap_to_end(s, cur, p, kCluster)) continue;
+        // crossed, and the face stayed whole). Only past it: snapping every crossing within
+        // kCluster of an end cost bunny_10's targets 11 domains outside their regions.
+        if (past_end(cur, p) && snap_to_end(s, cur, p, kCluster)) continue;
         int v = split_edge(cur, z);
         vertices_[v].p = p;
         touch_edge_faces(cur);  // the polished vertex moved off curve(z) by rounding
@@ -388,6 +389,14 @@ bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along)
     if (!(norm(s.g.gradient(p)) <= 1e-6)) return false;  // a tangent conic: nothing ends there
     if (!snap_to_end(s, e, p, kSnap)) s.mark_zero(split_edge(e, z));
     return true;
+}
+
+// p lies beyond an end of straight arc e (its foot outside the segment between the end vertices).
+bool DomainMesh::past_end(int e, Vec2 p) const {
+    if (!edges_[e].curve.straight()) return false;
+    const Vec2 a = vertices_[half_[2 * e].origin].p, b = vertices_[half_[2 * e + 1].origin].p;
+    const double t = dot(p - a, b - a);
+    return t <= 0 || t >= dot(b - a, b - a);
 }
 
 // A point of g = 0 on arc e within tol of one of its ends is that end: marked on the curve.
