@@ -283,11 +283,12 @@ void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, doubl
             // sources' edge quadratics is often nearly two parallel lines (degenerate seed 2463,
             // perpendicular sources: one arm only, and the face was not cut along the other).
             const Vec2 m{0.5, 0.25};
-            const double Ym = dot(m, e2), C = q.f + 2 * b2 * Ym;
+            const double Xm = dot(m, e1), Ym = dot(m, e2), C = q.f + 2 * b2 * Ym;
             const double disc = b1 * b1 - l1 * C;
             if (disc >= 0) {
                 const double h = -(b1 + std::copysign(std::sqrt(disc), b1));
-                const double r1 = h / l1, r2 = h != 0 ? C / h : r1;
+                double r1 = h / l1, r2 = h != 0 ? C / h : r1;
+                if (std::fabs(r2 - Xm) < std::fabs(r1 - Xm)) std::swap(r1, r2);  // the arm nearer T' first
                 for (int arm = 0; arm < (r1 == r2 ? 1 : 2); ++arm) {
                     const double X = arm ? r2 : r1;
                     const Vec2 u = e1 + (-(l1 * X + b1) / b2) * e2;
@@ -362,6 +363,12 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
         const double disc = b1 * b1 - l1 * q.f, dropped = 4 * std::fabs(l2) + 4 * std::fabs(b2);
         central = disc >= 1e-12 && dropped > 1e-9 * 2 * std::sqrt(disc);
     }
+    // A centre 1e8 away or more (|b2 / l2|, l1 being ~1): central points near T' are differences of
+    // terms that large, off by 1e-8 or more, where the parabola, which drops l2 Y^2, is off by
+    // 2 / |b2 / l2| (independent pair "soup" 3055: a hyperbola centred 2e10 away, its points near
+    // T' 2e-6 off the crossings, no chord found, the face kept whole; lines through a far centre
+    // through it are the parabola's arms, the near one as accurate).
+    if (central && std::fabs(b2) > 1e8 * std::fabs(l2)) central = false;
     if (central) decompose_central(q, l1, l2, e1, e2, b1, b2, out);
     else decompose_parabolic(q, l1, e1, e2, b1, b2, out);
 }

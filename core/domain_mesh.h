@@ -256,6 +256,7 @@ private:
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
     bool snap_to_end(SplitCall& s, int e, Vec2 p, double tol);
     bool past_end(int e, Vec2 p) const;
+    bool duplicate_chord(const Chord& c) const;
     void classify_by_side(SplitCall& s);
     void find_chords(SplitCall& s);
     static void hyperbola_as_line_pair(const Quadratic2& g, ConicDecomposition& dec);

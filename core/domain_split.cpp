@@ -463,6 +463,20 @@ void DomainMesh::find_chords(SplitCall& s) {
     for (const CurveComponent& comp : dec.components) add_chords_of_component(s, comp);
 }
 
+// A chord joining the same two vertices as one already found, through the same middle: the same
+// piece of curve on another component (a parabola is two components, one per arm, and where it
+// curves within T' both may reach the near arm: independent pair "soup" 3055, the chord inserted
+// twice and the face left whole).
+bool DomainMesh::duplicate_chord(const Chord& c) const {
+    if (c.va < 0) return false;
+    const Vec2 mid = c.comp.at(0.5 * (c.t0 + c.t1));
+    for (const Chord& d : tmp_.chords)
+        if (((d.va == c.va && d.vb == c.vb) || (d.va == c.vb && d.vb == c.va)) &&
+            norm(d.comp.at(0.5 * (d.t0 + d.t1)) - mid) <= kOffCurve)
+            return true;
+    return false;
+}
+
 // A hyperbola whose centre is on the curve as this split counts it (|g| <= kZero there) is the
 // line pair of its asymptotes: between the branches, 1e-7 apart at the centre, g is within kZero
 // of 0, and the vertices found on the curve there (a centre on the face's boundary) lie on the
@@ -547,7 +561,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             if ((short_chord || near_boundary(f, mid, kCluster)) && (boundary_hugs_chord(f, c, kCluster) || !chord_inside(f, c)))
                 continue;
         }
-        tmp_.chords.push_back(c);
+        if (!duplicate_chord(c)) tmp_.chords.push_back(c);
     }
 }
 

@@ -261,6 +261,37 @@ TEST(DomainSplit, NearlyLinearDifferenceIsALine) {
     EXPECT_NEAR(neg, 0.5 * (-g.f / (2 * g.d)) * (-g.f / (2 * g.e)), 1e-9);
 }
 
+// Two sources' difference near a parabola whose vertex lies ~20 away (independent pair "soup"
+// 3055): with l2 = 0 it is two components, one per arm, and where it curves within T' the far
+// arm's component reached the near arm too: the same chord twice, and the face was kept whole. With
+// its coefficients rounded to 9 digits it is a hyperbola centred 2e10 away, whose points near T'
+// (differences of terms 1e10) were 2e-6 off the crossings: no chord at all. The oracle: the sign of
+// g on a 1500 x 1500 grid over the triangle (its error ~1e-4 of the area).
+TEST(DomainSplit, ParabolaArmsAndAFarCentredHyperbola) {
+    const Quadratic2 parabola{-0.039503144231781369, -0.014310950768631104, -0.0051844812833255986, 0.6265617339515408,
+                              -0.46099383805485611, -1};
+    const Quadratic2 hyperbola{-0.0395031442, -0.0143109508, -0.00518448128, 0.626561734, -0.460993838, -1};
+    for (const Quadratic2& g : {parabola, hyperbola})
+        for (const auto& T : {std::array<Vec2, 3>{Vec2{0.7, 0}, Vec2{1, 0}, Vec2{0.7, 0.35}},
+                              std::array<Vec2, 3>{Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}},
+                              std::array<Vec2, 3>{Vec2{0.8, 0}, Vec2{1, 0}, Vec2{0.75, 0.3}}}) {
+            DomainMesh m(T);
+            double neg = 0;
+            for (auto piece : m.split_face(1, g))
+                if (piece.sign < 0) neg += m.face_area(piece.face);
+            const int n = 1500;
+            long inside = 0, below = 0;
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; i + j < n; ++j) {
+                    const Vec2 p = T[0] + ((i + 0.25) / n) * (T[1] - T[0]) + ((j + 0.25) / n) * (T[2] - T[0]);
+                    ++inside;
+                    below += g(p) < 0;
+                }
+            const double area = 0.5 * std::fabs(cross(T[1] - T[0], T[2] - T[0]));
+            EXPECT_NEAR(neg, area * below / inside, 1e-3 * area) << "corner " << T[2].x << " " << T[2].y;
+        }
+}
+
 // A thin ellipse of T''s size: g = (x - 1/2)^2 + eps (y - 1/2)^2 - w^2 with eps = 1e-11, w = 3e-6,
 // semi-axes w across and b = w / sqrt(eps) ~ 0.95 along (the difference of a source's edge
 // quadratic and a nearly parallel source's plane quadratic: degenerate pair "mirror" 11642). Its
