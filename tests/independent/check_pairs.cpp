@@ -1,10 +1,10 @@
 // Independent QA generator + checker for Hausdorff Lens on random degenerate mesh pairs (issue 8).
 // Written by a second author who did not read tests/degenerate_pairs.h: its own kinds, its own
-// long-double brute force (distances, branch-and-bound bounds of the one-sided distance). Not run
-// in CI (its known failures are listed in the README, "Tolerances and degenerate input"); built by
-// `cmake --build build --target hlens_check_pairs`, run by hand, e.g. `build/bin/hlens_check_pairs 0 4000`.
-// DUMP=prefix writes each pair as prefix_a.obj and prefix_b.obj.
-// Usage: gen_check SEED_FROM SEED_TO [KIND_FILTER] [--no-fork] [--verbose]
+// long-double brute force (distances, branch-and-bound bounds of the one-sided distance). CI runs
+// its first 250 seeds (ctest independent_pairs), where every check passes; beyond them it has known
+// failures (README, "Tolerances and degenerate input"): run by hand for more seeds, e.g.
+// `build/bin/hlens_check_pairs 0 4000`. DUMP=prefix writes each pair as prefix_a.obj and prefix_b.obj.
+// Usage: hlens_check_pairs SEED_FROM SEED_TO [KIND_FILTER] [--no-fork] [--verbose]
 //   kind of seed = kinds[seed % NKINDS]; the RNG is std::mt19937(seed).
 // Output: one line per failure: "FAIL seed=<s> kind=<k> check=<c> | <message>"
 //         one line per seed:    "SEED <s> <k> nA=.. nB=.. ok|fail time=.."
