@@ -366,8 +366,8 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // A centre 1e8 away or more (|b2 / l2|, l1 being ~1): central points near T' are differences of
     // terms that large, off by 1e-8 or more, where the parabola, which drops l2 Y^2, is off by
     // 2 / |b2 / l2| (independent pair "soup" 3055: a hyperbola centred 2e10 away, its points near
-    // T' 2e-6 off the crossings, no chord found, the face kept whole; lines through a far centre
-    // through it are the parabola's arms, the near one as accurate).
+    // T' 2e-6 off the crossings, no chord found, the face kept whole; a line pair centred that far
+    // becomes the parabola's arms, the near one as accurate).
     if (central && std::fabs(b2) > 1e8 * std::fabs(l2)) central = false;
     if (central) decompose_central(q, l1, l2, e1, e2, b1, b2, out);
     else decompose_parabolic(q, l1, e1, e2, b1, b2, out);

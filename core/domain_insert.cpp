@@ -62,13 +62,10 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
     }
     // Nothing cut, nothing relabelled: the mesh is as the last insertion left it, merged, unless
     // the larger allowance (a source farther from the frame's origin) makes neighbours that were
-    // not ties before ties now: then every edge is compared once (Degenerate.LargerTieAllowance...).
-    if (!L && vertices_.size() == nv && edges_.size() == ne && relabels_ == nr) {
-        if (!grew || !merge_equal_neighbours(nullptr, 0)) return false;
-        dissolve_collinear_vertices();
-        return true;
-    }
-    merge_equal_neighbours(L, since);
+    // not ties before ties now: then every edge is compared (since = 0; Degenerate.LargerTieAllowance...).
+    const bool unchanged = !L && vertices_.size() == nv && edges_.size() == ne && relabels_ == nr;
+    if (unchanged && !grew) return false;
+    if (!merge_equal_neighbours(L, since) && unchanged) return false;
     dissolve_collinear_vertices();
     return true;
 }

@@ -343,6 +343,24 @@ long double climb(const L3& a, const L3& b, const L3& c, long double u, long dou
     return best;
 }
 
+// The largest distance to B over A, as far as the oracle finds it: each triangle of A sampled on a
+// barycentric grid of n steps, its best sample climbed to its local maximum.
+long double climbed_maximum(const TriangleMesh& A, const TriangleMesh& B, int n) {
+    long double far = 0;
+    for (size_t t = 0; t < A.num_triangles(); ++t) {
+        const auto c = A.corners(t);
+        long double top = -1, tu = 0, tv = 0;
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j) {
+                const long double u = (long double)i / n, v = (long double)j / n;
+                const long double d = distance_ld(ld(c[0]) + (ld(c[1]) - ld(c[0])) * u + (ld(c[2]) - ld(c[0])) * v, B);
+                if (d > top) top = d, tu = u, tv = v;
+            }
+        far = std::max(far, climb(ld(c[0]), ld(c[1]), ld(c[2]), tu, tv, 1.0L / n, B));
+    }
+    return far;
+}
+
 }  // namespace
 
 // The certified interval holds the truth on every degenerate pair, by an oracle in extended
@@ -444,19 +462,7 @@ TEST(Degenerate, MirroredNearlyFlatTrianglesKeepTheirMaximum) {
         for (int dir = 0; dir < 2; ++dir) {
             const OneSidedResult& s = dir ? r.b_to_a : r.a_to_b;
             const TriangleMesh &from = dir ? B : A, &to = dir ? A : B;
-            long double far = 0;
-            const int n = 24;
-            for (size_t t = 0; t < from.num_triangles(); ++t) {
-                const auto c = from.corners(t);
-                long double top = -1, tu = 0, tv = 0;
-                for (int i = 0; i <= n; ++i)
-                    for (int j = 0; i + j <= n; ++j) {
-                        const long double u = (long double)i / n, v = (long double)j / n;
-                        const long double d = distance_ld(ld(c[0]) + (ld(c[1]) - ld(c[0])) * u + (ld(c[2]) - ld(c[0])) * v, to);
-                        if (d > top) top = d, tu = u, tv = v;
-                    }
-                far = std::max(far, climb(ld(c[0]), ld(c[1]), ld(c[2]), tu, tv, 1.0L / n, to));
-            }
+            const long double far = climbed_maximum(from, to, 24);
             const long double tol = 1e-12L * diag;
             SCOPED_TRACE(mode_name(mode));
             SCOPED_TRACE(dir);
@@ -686,19 +692,7 @@ TEST(Degenerate, PaperEqualsFastOnSliversAndTiedTargets) {
             EXPECT_EQ(p.upper, f.upper) << what;
             EXPECT_EQ(p.target, f.target) << what;
             const TriangleMesh &from = dir ? B : A, &to = dir ? A : B;
-            long double far = 0;
-            const int n = 16;
-            for (size_t t = 0; t < from.num_triangles(); ++t) {
-                const auto c = from.corners(t);
-                long double top = -1, tu = 0, tv = 0;
-                for (int i = 0; i <= n; ++i)
-                    for (int j = 0; i + j <= n; ++j) {
-                        const long double u = (long double)i / n, v = (long double)j / n;
-                        const long double d = distance_ld(ld(c[0]) + (ld(c[1]) - ld(c[0])) * u + (ld(c[2]) - ld(c[0])) * v, to);
-                        if (d > top) top = d, tu = u, tv = v;
-                    }
-                far = std::max(far, climb(ld(c[0]), ld(c[1]), ld(c[2]), tu, tv, 1.0L / n, to));
-            }
+            const long double far = climbed_maximum(from, to, 16);
             for (const OneSidedResult* s : {&p, &f}) {
                 const std::string m = what + " (" + (s == &p ? "paper" : "fast") + ")";
                 EXPECT_GE((long double)s->upper + tol, far) << m << ": upper " << s->upper << " below a sample at " << (double)far;
