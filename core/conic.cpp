@@ -113,21 +113,93 @@ Vec2 CurveComponent::at(double t) const {
 }
 
 double CurveComponent::param_of(Vec2 p) const {
-    Vec2 w = p - c;
+    double t[3];
+    feet(p, t);
+    return t[0];
+}
+
+// A thin conic (an ellipse or a branch 1e-6 wide and of T''s length, as the difference of an
+// edge's quadratic and a nearly parallel plane's is) runs mostly along one of its axes: a
+// parameter read off the other coordinate is off by 1e-4 for a point 1e-10 off the curve
+// (degenerate pair "mirror" 3994: a vertex on the branch taken 1e-4 away from it, no chord along
+// the sliver, the edge's domain lost). So each side's parameter is read off both coordinates,
+// the nearer point kept and polished (nearer_foot). Both sides of a thin conic may pass within
+// 1e-7 of p (a corner at a hairpin's tip): every such foot is returned.
+int CurveComponent::feet(Vec2 p, double (&out)[3]) const {
+    const Vec2 w = p - c;
+    double cand[3][2];  // per side, the parameter read off either coordinate
+    int n = 0;
     switch (kind) {
-        case CurveKind::Line: return dot(w, u) / norm2(u);
+        case CurveKind::Line: out[0] = dot(w, u) / norm2(u); return 1;
         case CurveKind::Parabola: {
-            // At the vertex u is perpendicular to v: the foot along u. Anchored elsewhere (see
-            // decompose_conic), w.u = t |u|^2 + t^2 v.u: its root near w.u / |u|^2.
+            // Anchored away from the vertex (see decompose_conic), w.u = t |u|^2 + t^2 v.u: its
+            // root near w.u / |u|^2; the curve runs nearly along u there.
             const double W = dot(w, u), uu = norm2(u), uv = dot(u, v);
-            if (std::fabs(uv) <= 1e-9 * std::sqrt(uu) * norm(v)) return W / uu;
-            const double disc = uu * uu + 4 * uv * W;
-            return disc > 0 ? 2 * W / (uu + std::sqrt(disc)) : W / uu;
+            if (!(std::fabs(uv) <= 1e-9 * std::sqrt(uu) * norm(v))) {
+                const double disc = uu * uu + 4 * uv * W;
+                out[0] = disc > 0 ? 2 * W / (uu + std::sqrt(disc)) : W / uu;
+                return 1;
+            }
+            // At the vertex (u perpendicular to v): the arms t and -t at p's coordinate along v.
+            const double tu = W / uu, tv = std::sqrt(std::max(0.0, dot(w, v) / norm2(v)));
+            cand[0][0] = tu, cand[0][1] = std::copysign(tv, W), cand[1][0] = cand[1][1] = -std::copysign(tv, W);
+            n = 2;
+            break;
         }
-        case CurveKind::Ellipse: return std::atan2(dot(w, v) / norm2(v), dot(w, u) / norm2(u));
-        case CurveKind::Hyperbola: return std::asinh(dot(w, v) / norm2(v));
+        case CurveKind::Ellipse: {  // the sides theta, -theta (about u) and pi - theta (about v)
+            const double th = std::atan2(dot(w, v) / norm2(v), dot(w, u) / norm2(u));
+            cand[0][0] = cand[0][1] = th, cand[1][0] = cand[1][1] = -th;
+            cand[2][0] = cand[2][1] = std::remainder(M_PI - th, 2 * M_PI);
+            n = 3;
+            break;
+        }
+        case CurveKind::Hyperbola: {  // the sides of the branch at p's coordinate along u
+            const double Y = dot(w, v) / norm2(v), tx = std::acosh(std::max(1.0, dot(w, u) / norm2(u)));
+            cand[0][0] = std::asinh(Y), cand[0][1] = std::copysign(tx, Y), cand[1][0] = cand[1][1] = -std::copysign(tx, Y);
+            n = 2;
+            break;
+        }
     }
-    return 0;
+    double d2[3];
+    for (int i = 0; i < n; ++i) {
+        const double t0 = cand[i][0], t1 = cand[i][1];
+        out[i] = nearer_foot(p, norm2(at(t1) - p) < norm2(at(t0) - p) ? t1 : t0);
+        d2[i] = norm2(at(out[i]) - p);
+    }
+    // The nearest first; the others only where they are within 1e-7 and the curve leaves p
+    // between them (another pass of the curve, not the same one found twice near a tip).
+    for (int i = 1; i < n; ++i)
+        if (d2[i] < d2[0]) std::swap(out[i], out[0]), std::swap(d2[i], d2[0]);
+    int m = 1;
+    for (int i = 1; i < n; ++i) {
+        bool other = d2[i] <= 1e-14;
+        for (int j = 0; j < m && other; ++j) {
+            const double gap = kind == CurveKind::Ellipse ? std::remainder(out[i] - out[j], 2 * M_PI) : out[i] - out[j];
+            other = norm2(at(out[j] + 0.5 * gap) - p) > 4e-14;
+        }
+        if (other) out[m++] = out[i];
+    }
+    return m;
+}
+
+// Newton's method on (at(t) - p) . at'(t) = 0 from t, each step kept only if it brings the curve's
+// point nearer to p.
+double CurveComponent::nearer_foot(Vec2 p, double t) const {
+    const bool hyp = kind == CurveKind::Hyperbola, par = kind == CurveKind::Parabola;
+    double best = norm2(at(t) - p);
+    for (int it = 0; it < 4 && best > 0; ++it) {
+        const double ch = hyp ? std::cosh(t) : std::cos(t), sh = hyp ? std::sinh(t) : std::sin(t);
+        const Vec2 d1 = par ? u + (2 * t) * v : hyp ? sh * u + ch * v : ch * v - sh * u;  // at'(t)
+        const Vec2 d2 = par ? 2 * v : hyp ? ch * u + sh * v : -(ch * u + sh * v);        // at''(t)
+        const Vec2 r = at(t) - p;
+        const double den = norm2(d1) + dot(r, d2);
+        if (!(den > 0)) break;
+        const double tn = t - dot(r, d1) / den, dn = norm2(at(tn) - p);
+        if (!(dn < best)) break;
+        t = tn, best = dn;
+    }
+    if (kind == CurveKind::Ellipse && std::fabs(t) > M_PI) t = std::remainder(t, 2 * M_PI);  // atan2's range, as callers expect
+    return t;
 }
 
 std::vector<CurveComponent::Piece> CurveComponent::pieces(double t0, double t1) const {
@@ -261,9 +333,17 @@ void decompose_central(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec2 
     out.type = ConicType::Hyperbola;
 }
 
+// How far changing l1 X^2 + 2 b1 X + f (disc = b1^2 - l1 f) by up to `dropped` moves its roots X:
+// by dropped / |2 sqrt(disc)| where they are well apart, at most sqrt(dropped / |l1|) where they
+// (nearly) meet, or appear there. (Within a factor of 2 of both.)
+double roots_moved(double l1, double disc, double dropped) {
+    return dropped / (2 * std::sqrt(std::max(disc, 0.0)) + std::sqrt(dropped * std::fabs(l1)));
+}
+
 // Parabolic: l2 ~ 0, so q = l1 X^2 + 2 b1 X + 2 b2 Y + f: a parabola, or without the Y term two
 // parallel lines, one double line or nothing.
-void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, double b1, double b2, ConicDecomposition& out) {
+void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, double b1, double b2, double disc,
+                         ConicDecomposition& out) {
     if (std::fabs(b2) > eps_par) {
         // Y = -(l1 X^2 + 2 b1 X + f) / (2 b2), parametrised by X = Xa + t. Anchored at the vertex
         // (Xa = -b1 / l1) unless that lies far outside the target (a nearly flat parabola, as the
@@ -308,7 +388,6 @@ void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, doubl
         out.type = ConicType::Parabola;
         return;
     }
-    double disc = b1 * b1 - l1 * q.f;
     if (disc <= eps_k) {
         out.type = disc >= -eps_k ? ConicType::DoubleLine : ConicType::Empty;
         return;
@@ -357,12 +436,12 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // of T''s size, as the difference of a source's edge quadratic and a nearly parallel source's
     // plane quadratic is (degenerate pair "mirror" 11642: an ellipse 3.5e-6 wide and ~1 long; as
     // parallel lines, 1.4e-6 off, it lost the sliver where the edge was nearer, and with it the
-    // maximum). The roots X of l1 X^2 + 2 b1 X + f move by the dropped terms over |2 sqrt(disc)|.
+    // maximum; "mirror" 250: a hyperbola whose parallel-line form had roots 6e-7 apart, where
+    // the dropped terms, 1e-11, widen it to 7e-6 across T').
+    const double disc = b1 * b1 - l1 * q.f;
     bool central = std::fabs(l2) > eps_par * std::fabs(l1);
-    if (!central && std::fabs(l2) > 1e-12 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2)) {
-        const double disc = b1 * b1 - l1 * q.f, dropped = 4 * std::fabs(l2) + 4 * std::fabs(b2);
-        central = disc >= 1e-12 && dropped > 1e-9 * 2 * std::sqrt(disc);
-    }
+    if (!central && std::fabs(l2) > 1e-14 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2))
+        central = roots_moved(l1, disc, 4 * std::fabs(l2) + 4 * std::fabs(b2)) > 1e-9;
     // A centre 1e8 away or more (|b2 / l2|, l1 being ~1): central points near T' are differences of
     // terms that large, off by 1e-8 or more, where the parabola, which drops l2 Y^2, is off by
     // 2 / |b2 / l2| (independent pair "soup" 3055: a hyperbola centred 2e10 away, its points near
@@ -370,7 +449,7 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // becomes the parabola's arms, the near one as accurate).
     if (central && std::fabs(b2) > 1e8 * std::fabs(l2)) central = false;
     if (central) decompose_central(q, l1, l2, e1, e2, b1, b2, out);
-    else decompose_parabolic(q, l1, e1, e2, b1, b2, out);
+    else decompose_parabolic(q, l1, e1, e2, b1, b2, disc, out);
 }
 
 }  // namespace hlens

@@ -101,12 +101,17 @@ struct CurveComponent {
     Vec2 c, u, v;
     Vec2 at(double t) const;
     double param_of(Vec2 p) const;  // parameter of (the foot of) a point on the curve
+    // Every parameter where the curve passes p (its feet, nearest first; a thin conic may pass
+    // within 1e-7 of p on both of its sides): 1 to 3 of them.
+    int feet(Vec2 p, double (&out)[3]) const;
     // The piece [t0, t1] as one or more rational arcs with well-conditioned weights (an ellipse
     // piece spans at most pi per arc, a hyperbola piece at most 3 in t); returns the z-intervals.
     struct Piece { RationalCurve curve; double z0, z1; };
     std::vector<Piece> pieces(double t0, double t1) const;
     void pieces(double t0, double t1, std::vector<Piece>& out) const;  // the same into `out`
     bool closed() const { return kind == CurveKind::Ellipse; }
+private:
+    double nearer_foot(Vec2 p, double t) const;  // t moved to the foot of p (param_of)
 };
 
 // What q = 0 looks like, for display and for the debugger's hover text.

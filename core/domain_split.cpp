@@ -525,8 +525,10 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
     std::vector<std::pair<double, int>>& pts = tmp_.pts;
     pts.clear();
     for (int v : tmp_.zverts) {
-        const double t = comp.param_of(vertices_[v].p);
-        if (on_component(s, comp, v, t)) pts.push_back({t, v});
+        double feet[3];  // a vertex at a thin conic's hairpin lies on both of its sides
+        const int n = comp.feet(vertices_[v].p, feet);
+        for (int k = 0; k < n; ++k)
+            if (on_component(s, comp, v, feet[k])) pts.push_back({feet[k], v});
     }
     std::sort(pts.begin(), pts.end());
     std::vector<Chord>& cand = tmp_.cand;
@@ -548,7 +550,9 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             cand.push_back({comp, pts[i].first, pts[i + 1].first, pts[i].second, pts[i + 1].second});
     }
     for (const Chord& c : cand) {
-        if (c.va >= 0 && c.va == c.vb && !comp.closed()) continue;
+        // From a vertex back to itself: a loop no wider than the 1e-7 within which the curve
+        // passed it twice (feet), unless it is the whole of a closed curve through one vertex.
+        if (c.va >= 0 && c.va == c.vb && !(comp.closed() && pts.size() == 1)) continue;
         if (c.va >= 0 && !(c.t1 - c.t0 > 1e-12)) continue;
         Vec2 mid = comp.at(0.5 * (c.t0 + c.t1));
         if (c.va >= 0) {

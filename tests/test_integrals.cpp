@@ -299,6 +299,15 @@ TEST(DomainSplit, ParabolaArmsAndAFarCentredHyperbola) {
 // lines x = 1/2 +- sqrt(w^2 - eps/4): 4.5e-7 inside it at y = 1/2, and the edge's sliver, where
 // the maximum was, was lost. Inside the triangle (0,0), (1,0), (1/2,1) g < 0 on the ellipse's
 // part 0 <= y <= 1, of area int 2 w sqrt(1 - ((y - 1/2) / b)^2) dy (Simpson, long double).
+// The area of the pieces where g < 0 when the triangle (0,0), (1,0), (0.5,1) is split by g = 0.
+double area_where_negative(const Quadratic2& g) {
+    DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0.5, 1}});
+    double neg = 0;
+    for (auto piece : m.split_face(1, g))
+        if (piece.sign < 0) neg += m.face_area(piece.face);
+    return neg;
+}
+
 TEST(DomainSplit, ThinEllipseOfTheTargetsSize) {
     const double eps = 1e-11, w = 3e-6, b = w / std::sqrt(eps);
     const Quadratic2 g{1, 0, eps, -0.5, -0.5 * eps, 0.25 + 0.25 * eps - w * w};
@@ -314,11 +323,60 @@ TEST(DomainSplit, ThinEllipseOfTheTargetsSize) {
                     1e-11)
             << "y " << y;
     const double want = integrate([&](long double y) { return 2 * w * std::sqrt(1 - (y - 0.5L) * (y - 0.5L) / (b * b)); }, 0, 1);
-    DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0.5, 1}});
-    double neg = 0;
-    for (auto piece : m.split_face(1, g))
-        if (piece.sign < 0) neg += m.face_area(piece.face);
-    EXPECT_NEAR(neg, want, 1e-3 * want);
+    EXPECT_NEAR(area_where_negative(g), want, 1e-3 * want);
+}
+
+// A hyperbola 1.6e-6 wide at the frame's origin and 6.5e-6 at y = 1 (x - 0.5 = +-sqrt(w^2 + eps y^2),
+// as the difference of an edge's quadratic and a nearly parallel plane's is, degenerate pair
+// "mirror" 250): its parallel-line form (dropping eps y^2) kept it 1.6e-6 wide across T', and the
+// sliver between the branches, where the edge is nearer, lost half of its area.
+TEST(DomainSplit, ThinHyperbolaWideningAcrossTheTarget) {
+    const double eps = 1e-11, w = 8e-7;
+    const Quadratic2 g{1, 0, -eps, -0.5, 0, 0.25 - w * w};
+    ASSERT_EQ(decompose_conic(g).type, ConicType::Hyperbola);
+    // The area between the branches inside T' (its half-width at height y is (1 - y) / 2, far
+    // wider than the strip but at the apex, where the strip's area is 1e-11 of it).
+    const double want = integrate([&](long double y) { return 2 * std::sqrt(w * w + eps * y * y); }, 0, 1);
+    EXPECT_NEAR(area_where_negative(g), want, 1e-3 * want);
+}
+
+// A point 1e-10 off a thin conic (a branch, an ellipse or a parabola 1e-6 wide and of T''s length)
+// has its foot within about that: the parameter is not read off the coordinate across the conic,
+// which that 1e-10 moves by 1e-4 of the conic's width (degenerate pair "mirror" 3994: a vertex of
+// the split taken 4e-5 away from the branch it lay on, and the sliver left uncut).
+TEST(Conic, FootOfAPointNearAThinConic) {
+    const Vec2 along = Vec2{0.735, 0.678} / norm(Vec2{0.735, 0.678}), across = perp(along);
+    CurveComponent hyp{CurveKind::Hyperbola, {-0.33, -0.4}, 0.15 * along, 3.7e-7 * across};
+    CurveComponent ell{CurveKind::Ellipse, {0.5, 0.3}, 0.4 * along, 3e-7 * across};
+    CurveComponent par{CurveKind::Parabola, {0.1, 0.1}, across, 1.6e12 * along};  // the vertex's form
+    struct Case { const CurveComponent* c; std::vector<double> ts; };
+    for (const Case& k : {Case{&hyp, {-2.6, -2.0, 2.0, 2.6}}, Case{&ell, {-2.5, -1.0, 0.5, 2.0}}, Case{&par, {-5e-7, -3e-7, 3e-7, 5e-7}}}) {
+        for (double t : k.ts) {
+            for (double side : {-1.0, 1.0}) {
+                // The unit normal at t, by a central difference of the curve's points.
+                const double h = std::fabs(t) * 1e-6;
+                const Vec2 tangent = k.c->at(t + h) - k.c->at(t - h), n = perp(tangent) / norm(tangent);
+                const Vec2 p = k.c->at(t) + (1e-10 * side) * n;
+                EXPECT_LT(norm(k.c->at(k.c->param_of(p)) - p), 2e-10) << curve_kind_name(k.c->kind) << " t " << t;
+            }
+        }
+    }
+}
+
+// Near the tip of a thin branch both of its sides pass within 1e-7 of a point: both are its feet
+// (a corner at a hairpin's tip ends the chords along both sides; with one, the chord along the
+// other side ran around the tip, 8e-5 outside T': degenerate seed 2245). The same side found twice
+// near the tip, where the curve does not leave the point between them, is one foot.
+TEST(Conic, BothSidesOfAHairpinAreFeet) {
+    const CurveComponent hyp{CurveKind::Hyperbola, {-0.15, 0}, {0.15, 0}, {0, 3.7e-7}};
+    const Vec2 p = 0.5 * (hyp.at(0.03) + hyp.at(-0.03));  // 1.1e-8 from both sides, 6.7e-5 from the tip
+    double t[3];
+    ASSERT_EQ(hyp.feet(p, t), 2);
+    EXPECT_LT(t[0] * t[1], 0);
+    for (int k = 0; k < 2; ++k) EXPECT_NEAR(std::fabs(t[k]), 0.03, 1e-6);
+    const Vec2 tip = hyp.at(0) + Vec2{-1e-9, 0};  // both sides' feet are the tip itself
+    EXPECT_EQ(hyp.feet(tip, t), 1);
+    EXPECT_NEAR(t[0], 0, 1e-6);
 }
 
 TEST(Integrals, SqrtOverQuarterDisc) {
