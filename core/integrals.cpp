@@ -40,6 +40,13 @@ void gauss_legendre(int n, std::vector<double>& x, std::vector<double>& w) {
 namespace {
 
 constexpr int kGaussN = 16;
+// rho^(2 kGaussN) by squaring (std::pow was 7% of the level areas' time).
+inline double pow32(double rho) {
+    static_assert(2 * kGaussN == 32, "pow32 squares five times");
+    double r = rho * rho;
+    r *= r; r *= r; r *= r;
+    return r * r;
+}
 
 struct GaussTable {
     std::vector<double> x16, w16, x3, w3;
@@ -144,7 +151,7 @@ Integral arc_integral(const Antiderivative& Q, const RationalCurve& c, double z0
         const double wl = wb.lower(rho);
         if (!(wl > 0)) continue;
         const double M = Q.bound(abs_bound(X, r) / wl, abs_bound(Y, r) / wl) * abs_bound(D, r) / (wl * wl);
-        best = std::min(best, 64.0 / 15 * M / ((rho * rho - 1) * std::pow(rho, 2 * kGaussN)));
+        best = std::min(best, 64.0 / 15 * M / ((rho * rho - 1) * pow32(rho)));
     }
     const double tol = 1e-14 * mass + 1e-300;
     if (best <= tol || depth >= 40 || !(h > 0)) return {sum, best};
@@ -344,7 +351,7 @@ Interval convex_range(const Quadratic2& P, const Box2& b) {
     return {lo - m, hi + m};
 }
 
-DomainIntegrals domain_integrals(const DomainMesh& m) {
+DomainIntegrals domain_integrals(const DomainMesh& m, std::vector<FaceMoments>* faces) {
     DomainIntegrals r;
     r.min_d2_lower = HUGE_VAL;
     const auto& F = m.faces();
@@ -356,8 +363,10 @@ DomainIntegrals domain_integrals(const DomainMesh& m) {
         r.int_d2 += q.value; r.err_d2 += q.error;
         r.int_d += s.value; r.err_d += s.error;
         const Box2 b = m.face_box((int)f);
-        r.min_d2_lower = std::min(r.min_d2_lower, std::max(0.0, convex_range(F[f].poly, b).lo));
+        const double lo = std::max(0.0, convex_range(F[f].poly, b).lo);
+        r.min_d2_lower = std::min(r.min_d2_lower, lo);
         r.max_d2 = std::max(r.max_d2, F[f].max_value);
+        if (faces) faces->push_back({a.value, s.value, q.value, lo, F[f].max_value});
     }
     if (r.min_d2_lower == HUGE_VAL) r.min_d2_lower = 0;
     return r;

@@ -55,7 +55,10 @@ struct DomainIntegrals {
     double min_d2_lower = 0;   // a lower bound of d^2 over the target (the faces' box ranges)
     double max_d2 = 0;         // the largest face maximum (DomainMesh::Face::max_value)
 };
-DomainIntegrals domain_integrals(const DomainMesh& m);
+// One domain's share (frame units): what surface_stats' estimate of the distribution reads.
+struct FaceMoments { double area = 0, int_d = 0, int_d2 = 0, min_d2_lower = 0, max_d2 = 0; };
+// `faces`, if given, receives each live finite face's moments (in face order).
+DomainIntegrals domain_integrals(const DomainMesh& m, std::vector<FaceMoments>* faces = nullptr);
 
 // One level t2 of d^2 on a domain mesh, in face order: a live finite face wholly above it is
 // visited as visit(f, true, false); one that straddles it is split along d^2 - t2 (split_face, from

@@ -63,6 +63,18 @@ double component_x_dy(const CurveComponent& c, double t0, double t1) {
 // A point where F's boundary changes from counted to not (or back): where C crosses it.
 struct Crossing { Vec2 p; int comp = 0; double t = 0; };
 
+}  // namespace
+
+// What a face's arcs are for every level alike (area_above_levels clips one face at many): per
+// half-edge of its loops, in their order, the arc in the shifted coordinates and P and w^2 composed
+// with it, so that P - t^2 along it is p - t^2 w2 (compose is linear in the quadratic).
+struct FaceArcs {
+    std::vector<RationalCurve> curve;
+    std::vector<Poly> p, w2;
+};
+
+namespace {
+
 // The area of face f where g > 0, g in coordinates shifted by -o (so are all points below but
 // those handed to the mesh's queries). Two parts: F's own arcs where g > 0 (boundary()), which
 // also finds the crossings, then the pieces of C = {g = 0} between them inside F (conic()).
@@ -72,17 +84,20 @@ struct AreaAbove {
     const Quadratic2& g;
     Vec2 o;
     double size, gtol;
+    const FaceArcs* arcs;   // the face's arcs precomputed for g = P - t2, or null
+    double t2;
     std::vector<Crossing> cross;
 
     // The loops' arcs, piece by piece; a change of "counted" along a loop is a crossing of C.
     double boundary() {
         double sum = 0;
+        size_t walk = 0;  // the half-edge's index in the walk (arcs)
         for (int loop : m.faces()[f].loops) {
             int first = -1, state = -1;
             Vec2 first_point{0, 0};
             int h = loop;
             do {
-                sum += half_edge(h, first, state, first_point);
+                sum += half_edge(h, walk++, first, state, first_point);
                 h = m.half_edges()[h].next;
             } while (h != loop);
             if (state >= 0 && state != first) cross.push_back({first_point});
@@ -92,18 +107,27 @@ struct AreaAbove {
     }
 
     // Half-edge h's pieces between the sign changes of g along it, in its direction.
-    double half_edge(int h, int& first, int& state, Vec2& first_point) {
+    double half_edge(int h, size_t walk, int& first, int& state, Vec2& first_point) {
         const int e = h >> 1;
         const bool fwd = !(h & 1);
         const DomainMesh::Edge& E = m.edges()[e];
-        const RationalCurve c = shifted(E.curve, o);
+        const RationalCurve c = arcs ? arcs->curve[walk] : shifted(E.curve, o);
+        Poly along;
+        if (arcs) {
+            const Poly& w2 = arcs->w2[walk];
+            along = arcs->p[walk];
+            for (int i = 0; i <= w2.deg; ++i) along.c[i] -= t2 * w2.c[i];
+            along.deg = std::max(along.deg, w2.deg);
+        } else {
+            along = c.compose(g);
+        }
         const auto& V = m.vertices();
         const auto& H = m.half_edges();
         const Vec2 va = V[H[2 * e].origin].p - o, vb = V[H[2 * e + 1].origin].p - o;
         double z[kMaxSignChangeRoots + 2], roots[kMaxSignChangeRoots];
         int n = 0;
         z[n++] = E.z0;
-        const int nr = sign_change_roots(c.compose(g), std::min(E.z0, E.z1), std::max(E.z0, E.z1), roots);
+        const int nr = sign_change_roots(along, std::min(E.z0, E.z1), std::max(E.z0, E.z1), roots);
         if (E.z0 <= E.z1) for (int k = 0; k < nr; ++k) z[n++] = roots[k];
         else for (int k = nr - 1; k >= 0; --k) z[n++] = roots[k];
         z[n++] = E.z1;
@@ -209,16 +233,34 @@ struct AreaAbove {
 
 // Area of face f where g > 0 (g in coordinates shifted by -o; its zero set decomposed in `dec`).
 double area_where_positive(const DomainMesh& m, int f, const Quadratic2& g, const ConicDecomposition& dec, Vec2 o,
-                           double size, double gtol) {
-    AreaAbove a{m, f, g, o, size, gtol, {}};
+                           double size, double gtol, const FaceArcs* arcs = nullptr, double t2 = 0) {
+    AreaAbove a{m, f, g, o, size, gtol, arcs, t2, {}};
     const double sum = a.boundary();
     return std::max(0.0, sum + a.conic(dec));
 }
 
 }  // namespace
 
-// face_area_above with the face's box and its range of d^2 there (convex_range) given.
-static double area_above(const DomainMesh& m, int f, double t2, const Box2& box, const Interval& r) {
+// The arcs of face f for area_above, in the coordinates shifted by -o.
+static void face_arcs(const DomainMesh& m, int f, Vec2 o, FaceArcs& out) {
+    const Quadratic2 P = shifted(m.faces()[f].poly, o);
+    Quadratic2 one;
+    one.f = 1;
+    for (int loop : m.faces()[f].loops) {
+        int h = loop;
+        do {
+            out.curve.push_back(shifted(m.edges()[h >> 1].curve, o));
+            out.p.push_back(out.curve.back().compose(P));
+            out.w2.push_back(out.curve.back().compose(one));
+            h = m.half_edges()[h].next;
+        } while (h != loop);
+    }
+}
+
+// face_area_above with the face's box and its range of d^2 there (convex_range) given, and its
+// arcs if known (face_arcs, with o the box's centre).
+static double area_above(const DomainMesh& m, int f, double t2, const Box2& box, const Interval& r,
+                         const FaceArcs* arcs = nullptr) {
     const DomainMesh::Face& face = m.faces()[f];
     const Vec2 o = 0.5 * (box.lo + box.hi);  // shifted coordinates: smaller rounding
     const double size = norm(box.hi - box.lo);
@@ -259,7 +301,7 @@ static double area_above(const DomainMesh& m, int f, double t2, const Box2& box,
             return sum;
         }
     }
-    return area_where_positive(m, f, g, dec, o, size, gtol);
+    return area_where_positive(m, f, g, dec, o, size, gtol, arcs, t2);
 }
 
 double face_area_above(const DomainMesh& m, int f, double t2) {
@@ -269,13 +311,13 @@ double face_area_above(const DomainMesh& m, int f, double t2) {
 
 std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<double>& levels) {
     // Each face's box, range and area once; a level inside a face's range costs one area_above.
-    struct FaceRange { int f; Box2 box; Interval r; double area; };
+    struct FaceRange { int f; Box2 box; Interval r; double area; FaceArcs arcs; };
     std::vector<FaceRange> faces;
     const auto& F = m.faces();
     for (size_t f = 1; f < F.size(); ++f)
         if (F[f].alive && !F[f].infinite) {
             const Box2 box = m.face_box((int)f);
-            faces.push_back({(int)f, box, convex_range(F[f].poly, box), -1});
+            faces.push_back({(int)f, box, convex_range(F[f].poly, box), -1, {}});
         }
     std::vector<double> out(levels.size(), 0.0);
     for (size_t j = 0; j < levels.size(); ++j)
@@ -285,7 +327,8 @@ std::vector<double> area_above_levels(const DomainMesh& m, const std::vector<dou
                 if (fr.area < 0) fr.area = face_area_exact(m, fr.f).value;
                 out[j] += fr.area;
             } else {
-                out[j] += area_above(m, fr.f, levels[j], fr.box, fr.r);
+                if (fr.arcs.curve.empty()) face_arcs(m, fr.f, 0.5 * (fr.box.lo + fr.box.hi), fr.arcs);
+                out[j] += area_above(m, fr.f, levels[j], fr.box, fr.r, &fr.arcs);
             }
         }
     return out;

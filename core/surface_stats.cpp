@@ -21,12 +21,18 @@ namespace hlens {
 
 namespace {
 
+// One domain's share of the estimate of the distribution (world units): its area, its distances
+// taken as spread uniformly over [lo, hi] (the uniform law with the domain's mean and variance of
+// d, clipped to its range). Only where the percentiles' passes start: never in a result.
+struct EstimatePiece { double area, lo, hi; };
+
 // What the first pass keeps of one target: its integrals (world units), its distance range, and
-// the area above each probe level inside that range (levels outside it are all or nothing).
+// the area above each first-pass level inside that range (levels outside it are all or nothing).
 struct TargetPass {
     TriangleStats tri;
     double dmin = 0;                              // a lower bound of d over the target
     std::vector<std::pair<int, double>> partial;  // (level index, area above it)
+    std::vector<EstimatePiece> estimate;          // per domain, when percentiles are asked for
     bool sliver = false;
     double sliver_area = 0;
     std::array<double, 3> corner_d{{0, 0, 0}};
@@ -86,7 +92,18 @@ struct MeshCache {
     }
 };
 
-TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::vector<double>& levels, MeshCache& cache) {
+void add_estimate_pieces(const std::vector<FaceMoments>& faces, double s, std::vector<EstimatePiece>& out) {
+    for (const FaceMoments& f : faces) {
+        if (!(f.area > 0)) continue;
+        const double mean = f.int_d / f.area, sd = std::sqrt(std::max(0.0, f.int_d2 / f.area - mean * mean));
+        const double lo = std::sqrt(f.min_d2_lower), hi = std::sqrt(std::max(0.0, f.max_d2));
+        const double a = std::clamp(mean - std::sqrt(3.0) * sd, lo, hi), b = std::clamp(mean + std::sqrt(3.0) * sd, lo, hi);
+        out.push_back({f.area * s * s, a * s, std::max(a, b) * s});
+    }
+}
+
+TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::vector<double>& levels, MeshCache& cache,
+                        bool estimate) {
     TargetPass r;
     TargetSolver ts(grid, side, t);
     ts.run();
@@ -100,7 +117,9 @@ TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::
         r.sliver_area = triangle_area(grid.mesh(side).corners(t));
         return r;
     }
-    const DomainIntegrals di = domain_integrals(*dm);
+    std::vector<FaceMoments> faces;
+    const DomainIntegrals di = domain_integrals(*dm, estimate ? &faces : nullptr);
+    add_estimate_pieces(faces, s, r.estimate);
     r.tri.area = di.area * s * s;
     r.tri.int_d2 = di.int_d2 * s * s * s * s;
     r.tri.int_d = di.int_d * s * s * s;
@@ -114,44 +133,102 @@ TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::
 }
 
 // Exact area above each level, summed over the targets in index order (deterministic).
-std::vector<double> level_areas(const std::vector<TargetPass>& pass, const std::vector<double>& levels) {
+// `partials` (one per target) instead of the first pass's own, if given.
+using Partial = std::vector<std::pair<int, double>>;
+std::vector<double> level_areas(const std::vector<TargetPass>& pass, const std::vector<double>& levels,
+                                const std::vector<Partial>* partials = nullptr) {
     std::vector<double> A(levels.size(), 0.0);
-    for (const TargetPass& p : pass) {
+    for (size_t t = 0; t < pass.size(); ++t) {
+        const TargetPass& p = pass[t];
         if (p.sliver) continue;
+        const Partial& part = partials ? (*partials)[t] : p.partial;
         size_t k = 0;
         for (size_t j = 0; j < levels.size(); ++j) {
-            while (k < p.partial.size() && p.partial[k].first < (int)j) ++k;
-            if (k < p.partial.size() && p.partial[k].first == (int)j) A[j] += p.partial[k].second;
+            while (k < part.size() && part[k].first < (int)j) ++k;
+            if (k < part.size() && part[k].first == (int)j) A[j] += part[k].second;
             else if (levels[j] < p.dmin) A[j] += p.tri.area;
         }
     }
     return A;
 }
 
-// The percentiles by bisection (second pass): each starts bracketed by two probe levels.
+// Where the estimate of the distribution (the first pass's pieces) puts each goal: the distance
+// above which that much area lies. Its area above t is piecewise linear in t (each piece adds its
+// area for t below lo, a linear share on [lo, hi]), so one sweep over the pieces' ends, sorted,
+// finds every goal. -1 where there is nothing to go by.
+std::vector<double> estimate_levels(const std::vector<TargetPass>& pass, const std::vector<double>& goals) {
+    struct End { double t, slope, jump; };  // at t: the slope of A changes by `slope`, A drops by `jump`
+    std::vector<End> ends;
+    double A = 0;
+    for (const TargetPass& p : pass)
+        for (const EstimatePiece& e : p.estimate) {
+            A += e.area;
+            if (e.hi > e.lo) ends.push_back({e.lo, -e.area / (e.hi - e.lo), 0}), ends.push_back({e.hi, e.area / (e.hi - e.lo), 0});
+            else ends.push_back({e.lo, 0, e.area});
+        }
+    std::vector<double> out(goals.size(), -1.0);
+    if (ends.empty()) return out;
+    std::sort(ends.begin(), ends.end(), [](const End& x, const End& y) { return x.t < y.t; });
+    double t = 0, slope = 0;  // A(t) on [t, next end) is A + slope (t' - t)
+    for (const End& e : ends) {
+        const double next = A + slope * (e.t - t);  // A just before e.t
+        for (size_t k = 0; k < goals.size(); ++k)
+            if (out[k] < 0 && next <= goals[k]) out[k] = slope < 0 ? t + (goals[k] - A) / slope : t;
+        A = next - e.jump;
+        t = e.t;
+        slope += e.slope;
+        for (size_t k = 0; k < goals.size(); ++k)
+            if (out[k] < 0 && A <= goals[k]) out[k] = t;
+    }
+    return out;
+}
+
+// The percentiles by bisection: each starts bracketed by 0 and the maximum, and each pass clips the
+// targets at a few levels inside the open brackets (Bracket::levels), then keeps the narrowest
+// bracket the exact areas there certify.
 struct Bracket {
     double lo, hi, goal;       // A(lo) > goal >= A(hi): the percentile lies in (lo, hi]
     double alo, ahi;           // A(lo), A(hi)
     bool done;
+    double estimate = -1;      // where the first pass's estimate puts it (< 0: none)
+    int passes = 0;
     int kept_lo = 0, kept_hi = 0;  // passes in a row that moved only the other end (Illinois)
     double last_width = HUGE_VAL;  // hi - lo before the last pass
-    // The next levels to clip at: either side (width/2, 32 width, ...) of the regula falsi point, with the
-    // Illinois rule (an end kept twice in a row counts half as far from the goal) so the
-    // convergence is superlinear, and the middle when the last pass did not halve the bracket.
+    // The next levels to clip at: a guess, and either side of it at distances delta and 4 or 32
+    // delta. The first guess is the estimate, good to a few percent on real pairs (bunny: 0.2% to
+    // 1.9%; delta 2.5% of it); later ones are the regula falsi point of the bracket with the
+    // Illinois rule (an end kept twice in a row counts half as far from the goal), off the root by
+    // about |A''/A'| width^2 / 32 where A is smooth, taken as width^2 / (2 guess) (A''/A' of the
+    // order of 1/t: 16 times that error; where A bends more, the far level holds the root). Once
+    // that is within two tolerances, the levels are 0.45 and 1.35 tolerances either side, so the
+    // next bracket is narrower than one. (Tried on bunny and its simplification: these take 4 or 5
+    // passes and the fewest clippings; a delta twice as large, 4 passes and a third more.) The
+    // far levels and the middle (when the last pass did not halve the bracket) bound the number of
+    // passes however A looks. The answer is certified by the exact areas at the bracket's ends,
+    // however the levels were chosen.
     void levels(double width, std::vector<double>& out) const {
-        double fl = alo - goal, fh = ahi - goal;  // > 0, <= 0
-        if (kept_lo >= 2) fl *= std::pow(0.5, kept_lo - 1);
-        if (kept_hi >= 2) fh *= std::pow(0.5, kept_hi - 1);
         const double mid = 0.5 * (lo + hi);
-        const double guess = fl - fh > 0 ? lo + (hi - lo) * fl / (fl - fh) : mid;
-        for (double step = 0.5 * width; step < hi - lo; step *= 64)  // a sparse ladder around it
-            for (double t : {guess - step, guess + step})
-                if (t > lo && t < hi) out.push_back(t);
+        double guess, delta, far = 32;
+        if (passes == 0 && estimate > lo && estimate < hi) {
+            guess = estimate;
+            delta = 0.025 * estimate;
+            far = 4;
+        } else {
+            double fl = alo - goal, fh = ahi - goal;  // > 0, <= 0
+            if (kept_lo >= 2) fl *= std::pow(0.5, kept_lo - 1);
+            if (kept_hi >= 2) fh *= std::pow(0.5, kept_hi - 1);
+            guess = fl - fh > 0 ? lo + (hi - lo) * fl / (fl - fh) : mid;
+            delta = std::min((hi - lo) * (hi - lo) / (2 * std::max(guess, 1e-300)), 0.25 * (hi - lo));
+        }
+        if (delta <= 2 * width) delta = 0.45 * width, far = 3;
+        for (double t : {guess - far * delta, guess - delta, guess + delta, guess + far * delta})
+            if (t > lo && t < hi) out.push_back(t);
         if (hi - lo > 0.5 * last_width && mid > lo && mid < hi) out.push_back(mid);
     }
     void update(const std::vector<double>& levels, const std::vector<double>& A) {
         const double old_lo = lo, old_hi = hi;
         last_width = hi - lo;
+        ++passes;
         for (size_t j = 0; j < levels.size(); ++j) {
             if (levels[j] <= lo || levels[j] >= hi) continue;
             if (A[j] > goal) { lo = levels[j]; alo = A[j]; }
@@ -162,72 +239,75 @@ struct Bracket {
     }
 };
 
-// Targets whose distance range meets an open bracket: only these can tell the brackets' ends apart.
-std::vector<uint32_t> targets_in_brackets(const std::vector<TargetPass>& pass, const std::vector<Bracket>& br) {
+// Targets whose distance range holds one of the levels: only these are clipped (the others are all
+// above or all below each level).
+std::vector<uint32_t> targets_at_levels(const std::vector<TargetPass>& pass, const std::vector<double>& levels) {
     std::vector<uint32_t> rerun;
     for (uint32_t t = 0; t < pass.size(); ++t) {
         if (pass[t].sliver) continue;
-        for (const Bracket& b : br)
-            if (!b.done && pass[t].dmin < b.hi && pass[t].tri.max > b.lo) { rerun.push_back(t); break; }
+        const auto it = std::lower_bound(levels.begin(), levels.end(), pass[t].dmin);
+        if (it != levels.end() && *it < pass[t].tri.max) rerun.push_back(t);
     }
     return rerun;
 }
 
-// One refinement pass: the targets that meet an open bracket are re-run and clipped at the few
-// levels Bracket::levels asks for (A is smooth but for small kinks, so the regula falsi point is
-// close and the two levels either side of it usually close the bracket within a few passes; the
-// middle, when a pass did not halve a bracket, bounds the number of passes whatever A looks like).
+// One refinement pass at `levels` (ascending): the targets that hold one are clipped there (their
+// kept domain meshes, or rebuilt), and each open bracket keeps what the exact areas certify.
 void refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, std::vector<Bracket>& br,
-                     const std::vector<uint32_t>& rerun, double width, const StatsOptions& opt, MeshCache& cache) {
-    std::vector<double> levels;
-    for (const Bracket& b : br)
-        if (!b.done) b.levels(width, levels);
-    std::sort(levels.begin(), levels.end());
-    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
-    std::vector<TargetPass> now = pass;  // the same targets, with partial areas at the new levels
-    for (TargetPass& p : now) p.partial.clear();
+                     const std::vector<double>& levels, const std::vector<uint32_t>& rerun, const StatsOptions& opt,
+                     MeshCache& cache) {
+    std::vector<Partial> now(pass.size());  // the areas above the new levels, where clipped
     parallel_for(rerun.size(), resolve_threads(opt.threads), opt.cancel, [&](size_t i) {
-        TargetPass& p = now[rerun[i]];
+        const TargetPass& p = pass[rerun[i]];
         cache.with_mesh(grid, side, rerun[i], [&](const DomainMesh& m, double scale) {
-            p.partial = partial_areas(m, scale, p.dmin, p.tri.max, levels);
+            now[rerun[i]] = partial_areas(m, scale, p.dmin, p.tri.max, levels);
         });
     });
-    const std::vector<double> A = level_areas(now, levels);
+    const std::vector<double> A = level_areas(pass, levels, &now);
     for (Bracket& b : br)
         if (!b.done) b.update(levels, A);
 }
 
-void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, const std::vector<double>& probes,
-                 const std::vector<double>& probe_area, const StatsOptions& opt, MeshCache& cache, SurfaceStats& out) {
+// The area that may lie above each percentile.
+std::vector<double> percentile_goals(const StatsOptions& opt, double area) {
+    std::vector<double> goals;
+    for (double p : opt.percentiles) goals.push_back((1 - p / 100) * area);
+    return goals;
+}
+
+// `est`: estimate_levels of the goals, `a0`: the exact area above 0, `top`: the largest distance.
+void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, const std::vector<double>& est,
+                 double a0, double top, const StatsOptions& opt, MeshCache& cache, SurfaceStats& out) {
+    const std::vector<double> goals = percentile_goals(opt, out.area);
     std::vector<Bracket> br;
-    for (double p : opt.percentiles) {
-        const double goal = (1 - p / 100) * out.area;  // the area that may lie above the percentile
-        Bracket b{0, std::max(probes.back(), out.max), goal, out.area, 0, false};
-        if (probe_area[0] <= goal) { b.hi = 0; b.done = true; }  // d = 0 on enough of the surface
-        for (size_t j = 0; j < probes.size() && !b.done; ++j)
-            if (probe_area[j] > goal) { b.lo = probes[j]; b.alo = probe_area[j]; }
-            else { b.hi = probes[j]; b.ahi = probe_area[j]; break; }
+    for (size_t k = 0; k < goals.size(); ++k) {
+        Bracket b{0, top, goals[k], a0, 0, false};
+        if (a0 <= goals[k]) { b.hi = 0; b.done = true; }  // d = 0 on enough of the surface
+        b.estimate = est[k];
         br.push_back(b);
     }
-    // Narrow the brackets by passes over the targets that meet them.
-    for (;;) {
-        for (Bracket& b : br) b.done = b.done || b.hi - b.lo <= out.percentile_tolerance;
-        const std::vector<uint32_t> rerun = targets_in_brackets(pass, br);
-        if (rerun.empty() || (opt.cancel && opt.cancel->load())) break;
+    for (int guard = 0; guard < 200; ++guard) {
+        std::vector<double> levels;
+        for (Bracket& b : br) {
+            b.done = b.done || b.hi - b.lo <= out.percentile_tolerance;
+            if (!b.done) b.levels(out.percentile_tolerance, levels);
+        }
+        std::sort(levels.begin(), levels.end());
+        levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+        if (levels.empty() || (opt.cancel && opt.cancel->load())) break;
+        const std::vector<uint32_t> rerun = targets_at_levels(pass, levels);
         out.rerun_targets += rerun.size();
         ++out.percentile_passes;
-        refine_brackets(grid, side, pass, br, rerun, out.percentile_tolerance, opt, cache);
+        refine_brackets(grid, side, pass, br, levels, rerun, opt, cache);
     }
     out.cancelled = opt.cancel && opt.cancel->load();
     for (const Bracket& b : br) out.percentiles.push_back(b.hi);
 }
 
-// The probe levels (ascending): uniform in [0, max], the histogram edges and the tolerance.
-std::vector<double> probe_levels(double dmax, const StatsOptions& opt, std::vector<double>& hist_edges) {
-    std::vector<double> levels;
-    // Uniform, and geometric towards 0 (most of a surface is usually much nearer than the maximum).
-    for (int k = 0; k <= opt.probes; ++k) levels.push_back(dmax * k / opt.probes);
-    for (int k = 1; k <= 24; ++k) levels.push_back(dmax * std::pow(2.0, -0.5 * k));
+// The first pass's levels (ascending): 0 (whether d = 0 on enough of the surface to make a
+// percentile 0), the histogram's edges and the tolerance.
+std::vector<double> first_pass_levels(const StatsOptions& opt, double dmax, std::vector<double>& hist_edges) {
+    std::vector<double> levels{0.0};
     if (opt.histogram_bins > 0) {
         const double top = opt.histogram_max >= 0 ? opt.histogram_max : dmax;
         for (int k = 0; k <= opt.histogram_bins; ++k) hist_edges.push_back(top * k / opt.histogram_bins);
@@ -251,15 +331,16 @@ double largest_distance(const VoxelGrid& grid, int side, const StatsOptions& opt
 SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& opt) {
     if (side != 0 && side != 1) throw std::invalid_argument("surface_stats: side must be 0 or 1");
     if (opt.histogram_bins < 0) throw std::invalid_argument("surface_stats: histogram_bins must be >= 0");
-    if (opt.probes < 1) throw std::invalid_argument("surface_stats: probes must be >= 1");
     for (double p : opt.percentiles)
         if (!(p >= 0 && p <= 100)) throw std::invalid_argument("surface_stats: percentiles must lie in [0, 100]");
     const TriangleMesh& M = grid.mesh(side);
     const size_t n = M.num_triangles();
     SurfaceStats out;
-    const double dmax = opt.known_max >= 0 ? opt.known_max : largest_distance(grid, side, opt);
+    // The distance itself is needed before the first pass only for the histogram's default top edge.
+    const bool need_max = opt.histogram_bins > 0 && opt.histogram_max < 0;
+    const double dmax = opt.known_max >= 0 ? opt.known_max : need_max ? largest_distance(grid, side, opt) : 0.0;
     std::vector<double> hist_edges;
-    const std::vector<double> levels = probe_levels(dmax, opt, hist_edges);
+    const std::vector<double> levels = first_pass_levels(opt, dmax, hist_edges);
 
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
@@ -267,7 +348,7 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     MeshCache cache(opt.percentiles.empty() ? 0 : n);
     ProgressTicker prog(opt.progress, n);
     parallel_for(n, resolve_threads(opt.threads), opt.cancel, [&](size_t t) {
-        pass[t] = solve_target(grid, side, (uint32_t)t, levels, cache);
+        pass[t] = solve_target(grid, side, (uint32_t)t, levels, cache, !opt.percentiles.empty());
         prog.tick();
     });
     if (opt.cancel && opt.cancel->load()) { out.cancelled = true; return out; }
@@ -303,11 +384,13 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     }
     const Box3 box = [&] { Box3 b = grid.mesh(0).bounds(); Box3 c = grid.mesh(1).bounds(); b.add(c.lo); b.add(c.hi); return b; }();
     out.percentile_tolerance = 1e-9 * box.diagonal();
-    std::vector<double> probes, probe_area;
-    for (size_t j = 0; j < levels.size(); ++j) { probes.push_back(levels[j]); probe_area.push_back(A[j]); }
     const auto t1 = Clock::now();
     out.seconds_first_pass = std::chrono::duration<double>(t1 - t0).count();
-    if (!opt.percentiles.empty()) percentiles(grid, side, pass, probes, probe_area, opt, cache, out);
+    if (!opt.percentiles.empty()) {
+        const std::vector<double> est = estimate_levels(pass, percentile_goals(opt, out.area));
+        for (TargetPass& p : pass) p.estimate = {};  // (one piece per domain: free it for the passes)
+        percentiles(grid, side, pass, est, A[0], std::max(dmax, out.max), opt, cache, out);
+    }
     out.seconds_percentiles = std::chrono::duration<double>(Clock::now() - t1).count();
     return out;
 }
@@ -315,7 +398,7 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
 namespace {
 double largest_distance(const VoxelGrid& grid, int side, const StatsOptions& opt) {
     // The full construction of every target is run below anyway; here the maxima alone, by the
-    // fast driver's culling, so the probes span [0, h] before the first pass.
+    // fast driver's culling, so the histogram's edges are known before the first pass.
     HausdorffOptions ho;
     ho.threads = opt.threads;
     ho.cancel = opt.cancel;

@@ -4,11 +4,13 @@
 // Issue 9, after Straub 2007 §5 ("future work": the mean squared distance as the integral of d^2
 // over the domains). Every target T' of the measured mesh gets the paper's full construction
 // (target_solver.h, never stopped early, as target_maxima.h runs it), and its finished domain
-// mesh is integrated (integrals.h). Percentiles are found by bisection on the exact area above t:
-// a first pass measures that area at fixed probe levels, which brackets each percentile between
-// two probes; further passes over only the targets whose distance range meets a bracket clip them
-// at a few levels inside it (around the regula falsi point: Bracket in the .cpp), until every
-// bracket is narrower than 1e-9 of the bounding-box diagonal. The first pass keeps the finished
+// mesh is integrated (integrals.h). Percentiles are found by bisection on the exact area above t,
+// each bracketed by 0 and the maximum at first: the first pass also estimates the distribution
+// (each domain's mean and variance of d as a uniform law over its range), which gives the first
+// guess; each further pass clips the targets whose distance range holds one of a few levels
+// around each guess (then the regula falsi point of the bracket: Bracket in the .cpp), until every
+// bracket is narrower than 1e-9 of the bounding-box diagonal. The estimate only says where to look:
+// every bracket is certified by the exact areas at its ends. The first pass keeps the finished
 // domain meshes, compacted (DomainMesh::compact), up to a memory budget (about 1 GB); the passes
 // rebuild only the others. The area above a level is integrated without splitting a domain
 // (level_area.cpp).
@@ -33,7 +35,6 @@ struct StatsOptions {
     int histogram_bins = 0;                            // 0: no histogram
     double histogram_max = -1;                         // upper edge; < 0: the largest distance
     double tolerance = -1;                             // < 0: none
-    int probes = 32;                                   // probe levels of the first pass
     double known_max = -1;                             // the one-sided distance if known (else found first)
     const std::atomic<bool>* cancel = nullptr;
     std::function<void(double fraction)> progress;

@@ -107,18 +107,22 @@ void TargetSolver::emit(Event e) {
     if (recording_) log_.push_back(std::move(e));
 }
 
+// A lower bound of the distance from T' to the sources listed in voxel v: the gap between the
+// target's box and the voxel's, less the margins; inside the grid also the gap to the nearest of
+// the target's own voxels (tighter for a large target among small voxels; the box's for a small
+// one in a large voxel, whose 26 neighbours it keeps from being visited). Both shrink along a
+// path from v towards a voxel of the target, so the nearest-first search still reaches every
+// voxel within the search radius.
 double TargetSolver::voxel_distance2(size_t v) const {
     const MeshGrid& g = grid_.of(1 - side_);
-    double best = HUGE_VAL;
-    if (outside_grid_) {  // the gap between the target's box and the voxel's, less the margins
-        const Box3 b = g.voxel_box(v);
-        best = 0;
-        for (int i = 0; i < 3; ++i) {
-            const double gap = std::max({0.0, b.lo[i] - box_.hi[i], box_.lo[i] - b.hi[i]}) - 2 * g.margin();
-            if (gap > 0) best += gap * gap;
-        }
-        return best;
+    double box_gap = 0;
+    const Box3 b = g.voxel_box(v);
+    for (int i = 0; i < 3; ++i) {
+        const double gap = std::max({0.0, b.lo[i] - box_.hi[i], box_.lo[i] - b.hi[i]}) - 2 * g.margin();
+        if (gap > 0) box_gap += gap * gap;
     }
+    if (outside_grid_) return box_gap;
+    double best = HUGE_VAL;
     auto c = g.coords(v);
     for (const auto& t : target_voxels_) {
         double d2 = 0;
@@ -129,7 +133,7 @@ double TargetSolver::voxel_distance2(size_t v) const {
         }
         best = std::min(best, d2);
     }
-    return best;
+    return std::max(best, box_gap);
 }
 
 void TargetSolver::begin() {

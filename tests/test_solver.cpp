@@ -288,6 +288,42 @@ TEST(SolverSteps, EventsInOrderAndStateBetweenSteps) {
     EXPECT_NEAR(std::sqrt(ts.max_sq()), std::sqrt(grid.nearest(1, ts.max_point()).dist2), 1e-12);
 }
 
+// A target much smaller than a voxel of the sources' grid, near its middle: the voxels around it
+// lie farther than the search radius by the gap between their boxes and the target's box, so the
+// search visits only the voxels that box meets (by the distance between voxel indices alone, all
+// of its neighbours lie at distance 0 and were visited). The result is unchanged.
+TEST(SolverSteps, SmallTargetVisitsOnlyTheVoxelsItsBoxMeets) {
+    TriangleMesh B = height_field(4, [](double x, double y) { return 0.2 * std::sin(2 * x + y); });
+    VoxelGrid probe_grid(B, B);
+    const MeshGrid& g = probe_grid.of(1);
+    const size_t mid = g.index(g.nx / 2, g.ny / 2, g.nz / 2);
+    const Box3 vb = g.voxel_box(mid);
+    const Vec3 c = (vb.lo + vb.hi) * 0.5;
+    const Vec3 on = probe_grid.nearest(1, c).point;  // the surface point nearest the voxel's centre
+    const double s = 1e-3 * g.voxel_size;
+    TriangleMesh A = mesh_of({{on.x, on.y, on.z + s}, {on.x + s, on.y, on.z + s}, {on.x, on.y + s, on.z + s}}, {{0, 1, 2}});
+    VoxelGrid grid(A, B);
+    const MeshGrid& gb = grid.of(1);
+    ASSERT_EQ(gb.voxel_size, g.voxel_size);  // the same grid over B
+    TargetSolver ts(grid, 0, 0);
+    ts.record_events();
+    ts.run();
+    int visited = 0;
+    for (const Event& e : ts.events()) {
+        if (e.kind != EventKind::VoxelVisited) continue;
+        ++visited;
+        EXPECT_LE(e.distance, ts.search_radius() * (1 + 1e-9));
+    }
+    // The voxels the target's box meets (at most 8, as it is far smaller than a voxel).
+    const auto lo = gb.locate(A.bounds().lo), hi = gb.locate(A.bounds().hi);
+    const int meets = (hi[0] - lo[0] + 1) * (hi[1] - lo[1] + 1) * (hi[2] - lo[2] + 1);
+    EXPECT_LE(visited, meets);
+    EXPECT_GE(visited, 1);
+    EXPECT_EQ(ts.validate(), "");
+    EXPECT_NEAR(std::sqrt(ts.max_sq()), std::sqrt(grid.nearest(1, ts.max_point()).dist2), 1e-12);
+    for (const Vec3& p : A.positions) EXPECT_LE(std::sqrt(grid.nearest(1, p).dist2), ts.search_radius() * (1 + 1e-12));
+}
+
 // ---------------------------------------------------------------- whole meshes
 
 TEST(Driver, PaperAndFastAgreeAndThreadsDoNotMatter) {
