@@ -183,6 +183,23 @@ std::vector<double> estimate_levels(const std::vector<TargetPass>& pass, const s
     return out;
 }
 
+// Every level whose exact area above is known, ascending: (t, A(t)).
+using Known = std::vector<std::pair<double, double>>;
+
+// t as a polynomial in A through the n points p (Neville), at A = goal; NaN where two points have
+// the same area (A flat between them: no inverse).
+double inverse_interpolate(const std::pair<double, double>* p, int n, double goal) {
+    double t[4];
+    for (int i = 0; i < n; ++i) t[i] = p[i].first;
+    for (int m = 1; m < n; ++m)
+        for (int i = 0; i + m < n; ++i) {
+            const double a0 = p[i].second, a1 = p[i + m].second;
+            if (!(a0 != a1)) return NAN;
+            t[i] = ((goal - a1) * t[i] - (goal - a0) * t[i + 1]) / (a0 - a1);
+        }
+    return t[0];
+}
+
 // The percentiles by bisection: each starts bracketed by 0 and the maximum, and each pass clips the
 // targets at a few levels inside the open brackets (Bracket::levels), then keeps the narrowest
 // bracket the exact areas there certify.
@@ -194,36 +211,64 @@ struct Bracket {
     int passes = 0;
     int kept_lo = 0, kept_hi = 0;  // passes in a row that moved only the other end (Illinois)
     double last_width = HUGE_VAL;  // hi - lo before the last pass
-    // The next levels to clip at: a guess, and either side of it at distances delta and 4 or 32
-    // delta. The first guess is the estimate, good to a few percent on real pairs (bunny: 0.2% to
-    // 1.9%; delta 2.5% of it); later ones are the regula falsi point of the bracket with the
-    // Illinois rule (an end kept twice in a row counts half as far from the goal), off the root by
-    // about |A''/A'| width^2 / 32 where A is smooth, taken as width^2 / (2 guess) (A''/A' of the
-    // order of 1/t: 16 times that error; where A bends more, the far level holds the root). Once
-    // that is within two tolerances, the levels are 0.45 and 1.35 tolerances either side, so the
-    // next bracket is narrower than one. (Tried on bunny and its simplification: these take 4 or 5
-    // passes and the fewest clippings; a delta twice as large, 4 passes and a third more.) The
-    // far levels and the middle (when the last pass did not halve the bracket) bound the number of
-    // passes however A looks. The answer is certified by the exact areas at the bracket's ends,
-    // however the levels were chosen.
-    void levels(double width, std::vector<double>& out) const {
+    // The next levels to clip at: a guess, and either side of it at distances delta and 4, 16 or
+    // 32 delta. The first guess is the estimate, good to a few percent on real pairs (bunny: 0.2%
+    // to 1.9%; delta 2.5% of it). Later ones interpolate t as a cubic in A through the bracket's
+    // ends and the known levels next to them (Neville), delta twice its difference from the
+    // quadratics through three of them (A is smooth but for small kinks). Where that fails (too
+    // few levels known, A flat, the guess outside the bracket, an end kept twice), the regula falsi
+    // point of the bracket with the Illinois rule (an end kept twice in a row counts half as far
+    // from the goal), off the root by about |A''/A'| width^2 / 32 where A is smooth, taken as
+    // width^2 / (2 guess) (A''/A' of the order of 1/t: 16 times that error). Once delta is within
+    // two tolerances, the levels are 0.45 and 1.35 tolerances either side, so the next bracket is
+    // narrower than one. The far levels and the middle (when the last pass did not halve the
+    // bracket) bound the number of passes however A looks. The answer is certified by the exact
+    // areas at the bracket's ends, however the levels were chosen.
+    void levels(double width, const Known& known, std::vector<double>& out) const {
         const double mid = 0.5 * (lo + hi);
-        double guess, delta, far = 32;
+        double guess = NAN, delta = 0, far = 32;
         if (passes == 0 && estimate > lo && estimate < hi) {
             guess = estimate;
             delta = 0.025 * estimate;
             far = 4;
-        } else {
+        } else if (kept_lo < 2 && kept_hi < 2) {
+            interpolated(known, guess, delta);
+            far = 16;
+        }
+        if (!(guess > lo && guess < hi)) {
+            far = 32;
             double fl = alo - goal, fh = ahi - goal;  // > 0, <= 0
             if (kept_lo >= 2) fl *= std::pow(0.5, kept_lo - 1);
             if (kept_hi >= 2) fh *= std::pow(0.5, kept_hi - 1);
             guess = fl - fh > 0 ? lo + (hi - lo) * fl / (fl - fh) : mid;
-            delta = std::min((hi - lo) * (hi - lo) / (2 * std::max(guess, 1e-300)), 0.25 * (hi - lo));
+            delta = (hi - lo) * (hi - lo) / (2 * std::max(guess, 1e-300));
         }
+        delta = std::min(delta, 0.25 * (hi - lo));
         if (delta <= 2 * width) delta = 0.45 * width, far = 3;
         for (double t : {guess - far * delta, guess - delta, guess + delta, guess + far * delta})
             if (t > lo && t < hi) out.push_back(t);
         if (hi - lo > 0.5 * last_width && mid > lo && mid < hi) out.push_back(mid);
+    }
+    // The cubic guess through the known levels around the bracket, and twice its distance from the
+    // quadratic ones as delta; guess NaN if there are not three such levels with distinct areas.
+    void interpolated(const Known& known, double& guess, double& delta) const {
+        const auto it = std::lower_bound(known.begin(), known.end(), std::make_pair(lo, -HUGE_VAL));
+        if (it == known.end() || it->first != lo || it + 1 == known.end() || (it + 1)->first != hi) return;
+        const size_t i = (size_t)(it - known.begin());
+        const size_t from = i > 0 ? i - 1 : i, to = std::min(known.size(), i + 3);  // [from, to): up to 4 points
+        const int n = (int)(to - from);
+        if (n < 3) return;
+        const double g = inverse_interpolate(&known[from], n, goal);
+        double err = 0;
+        if (n == 4) {
+            err = std::max(std::fabs(g - inverse_interpolate(&known[from], 3, goal)),
+                           std::fabs(g - inverse_interpolate(&known[from + 1], 3, goal)));
+        } else {
+            err = std::fabs(g - inverse_interpolate(&known[i], 2, goal));
+        }
+        if (!std::isfinite(g) || !std::isfinite(err)) return;
+        guess = g;
+        delta = 2 * err;
     }
     void update(const std::vector<double>& levels, const std::vector<double>& A) {
         const double old_lo = lo, old_hi = hi;
@@ -253,9 +298,9 @@ std::vector<uint32_t> targets_at_levels(const std::vector<TargetPass>& pass, con
 
 // One refinement pass at `levels` (ascending): the targets that hold one are clipped there (their
 // kept domain meshes, or rebuilt), and each open bracket keeps what the exact areas certify.
-void refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, std::vector<Bracket>& br,
-                     const std::vector<double>& levels, const std::vector<uint32_t>& rerun, const StatsOptions& opt,
-                     MeshCache& cache) {
+std::vector<double> refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass,
+                                    std::vector<Bracket>& br, const std::vector<double>& levels,
+                                    const std::vector<uint32_t>& rerun, const StatsOptions& opt, MeshCache& cache) {
     std::vector<Partial> now(pass.size());  // the areas above the new levels, where clipped
     parallel_for(rerun.size(), resolve_threads(opt.threads), opt.cancel, [&](size_t i) {
         const TargetPass& p = pass[rerun[i]];
@@ -266,6 +311,7 @@ void refine_brackets(const VoxelGrid& grid, int side, const std::vector<TargetPa
     const std::vector<double> A = level_areas(pass, levels, &now);
     for (Bracket& b : br)
         if (!b.done) b.update(levels, A);
+    return A;
 }
 
 // The area that may lie above each percentile.
@@ -275,22 +321,34 @@ std::vector<double> percentile_goals(const StatsOptions& opt, double area) {
     return goals;
 }
 
-// `est`: estimate_levels of the goals, `a0`: the exact area above 0, `top`: the largest distance.
+// `est`: estimate_levels of the goals, `known`: the first pass's levels (0 among them) and their
+// exact areas above, `top`: the largest distance.
 void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, const std::vector<double>& est,
-                 double a0, double top, const StatsOptions& opt, MeshCache& cache, SurfaceStats& out) {
+                 Known known, double top, const StatsOptions& opt, MeshCache& cache, SurfaceStats& out) {
     const std::vector<double> goals = percentile_goals(opt, out.area);
+    const double a0 = known.front().second;  // above 0
+    auto add_known = [&](double t, double a) {
+        const auto it = std::lower_bound(known.begin(), known.end(), std::make_pair(t, -HUGE_VAL));
+        if (it == known.end() || it->first != t) known.insert(it, {t, a});
+    };
+    add_known(top, 0.0);
     std::vector<Bracket> br;
     for (size_t k = 0; k < goals.size(); ++k) {
         Bracket b{0, top, goals[k], a0, 0, false};
         if (a0 <= goals[k]) { b.hi = 0; b.done = true; }  // d = 0 on enough of the surface
         b.estimate = est[k];
+        for (const auto& [t, a] : known)  // the first pass's levels (histogram, tolerance) narrow it already
+            if (!b.done && t > b.lo && t < b.hi) {
+                if (a > b.goal) b.lo = t, b.alo = a;
+                else b.hi = t, b.ahi = a;
+            }
         br.push_back(b);
     }
     for (int guard = 0; guard < 200; ++guard) {
         std::vector<double> levels;
         for (Bracket& b : br) {
             b.done = b.done || b.hi - b.lo <= out.percentile_tolerance;
-            if (!b.done) b.levels(out.percentile_tolerance, levels);
+            if (!b.done) b.levels(out.percentile_tolerance, known, levels);
         }
         std::sort(levels.begin(), levels.end());
         levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
@@ -298,7 +356,8 @@ void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>&
         const std::vector<uint32_t> rerun = targets_at_levels(pass, levels);
         out.rerun_targets += rerun.size();
         ++out.percentile_passes;
-        refine_brackets(grid, side, pass, br, levels, rerun, opt, cache);
+        const std::vector<double> A = refine_brackets(grid, side, pass, br, levels, rerun, opt, cache);
+        for (size_t j = 0; j < levels.size(); ++j) add_known(levels[j], A[j]);
     }
     out.cancelled = opt.cancel && opt.cancel->load();
     for (const Bracket& b : br) out.percentiles.push_back(b.hi);
@@ -389,7 +448,9 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     if (!opt.percentiles.empty()) {
         const std::vector<double> est = estimate_levels(pass, percentile_goals(opt, out.area));
         for (TargetPass& p : pass) p.estimate = {};  // (one piece per domain: free it for the passes)
-        percentiles(grid, side, pass, est, A[0], std::max(dmax, out.max), opt, cache, out);
+        Known known;
+        for (size_t j = 0; j < levels.size(); ++j) known.push_back({levels[j], A[j]});
+        percentiles(grid, side, pass, est, known, std::max(dmax, out.max), opt, cache, out);
     }
     out.seconds_percentiles = std::chrono::duration<double>(Clock::now() - t1).count();
     return out;
