@@ -65,8 +65,10 @@ constexpr std::array<int, 3> kMapLow = {71, 1, 85};        // viridis at 0
 constexpr std::array<int, 3> kMapHigh = {252, 231, 33};    // viridis at 1
 constexpr std::array<int, 3> kSelected = {255, 64, 217};   // the selected target (1, 0.25, 0.85)
 
-// The scratch directories of the running test. When the test ends they are removed, unless it
-// failed: then they are kept for inspection (screenshots, logs) and their paths printed.
+// The scratch directories of the running test. When the test ends they are removed, passed or
+// failed (a failed attempt that a rerun passes, as the sanitizer stage allows, must not leave them
+// in /tmp either); with HLENS_KEEP_GUI_SCRATCH set, a failed test's are kept for inspection
+// (screenshots, logs) and their paths printed.
 std::vector<fs::path>& scratch_dirs() {
     static std::vector<fs::path> dirs;
     return dirs;
@@ -74,8 +76,9 @@ std::vector<fs::path>& scratch_dirs() {
 
 struct ScratchCleanup : ::testing::EmptyTestEventListener {
     void OnTestEnd(const ::testing::TestInfo& info) override {
+        const bool keep = info.result()->Failed() && std::getenv("HLENS_KEEP_GUI_SCRATCH");
         for (const fs::path& d : scratch_dirs()) {
-            if (info.result()->Failed()) {
+            if (keep) {
                 std::printf("[ info ] kept %s\n", d.c_str());
             } else {
                 std::error_code ec;
