@@ -26,12 +26,14 @@ namespace {
 // d, clipped to its range). Only where the percentiles' passes start: never in a result.
 struct EstimatePiece { double area, lo, hi; };
 
+using Partial = std::vector<std::pair<int, double>>;  // (level index, area above it), by level
+
 // What the first pass keeps of one target: its integrals (world units), its distance range, and
 // the area above each first-pass level inside that range (levels outside it are all or nothing).
 struct TargetPass {
     TriangleStats tri;
     double dmin = 0;                              // a lower bound of d over the target
-    std::vector<std::pair<int, double>> partial;  // (level index, area above it)
+    Partial partial;                              // at the first pass's levels
     std::vector<EstimatePiece> estimate;          // per domain, when percentiles are asked for
     bool sliver = false;
     double sliver_area = 0;
@@ -43,8 +45,7 @@ double triangle_area(const std::array<Vec3, 3>& c) { return 0.5 * norm(cross(c[1
 
 // The area above each level (world distances, ascending) inside [dmin, dmax): the levels at or
 // above the maximum have none, those below dmin the whole area; only the others are clipped.
-std::vector<std::pair<int, double>> partial_areas(const DomainMesh& m, double scale, double dmin, double dmax,
-                                                  const std::vector<double>& levels) {
+Partial partial_areas(const DomainMesh& m, double scale, double dmin, double dmax, const std::vector<double>& levels) {
     std::vector<double> t2;
     std::vector<int> index;
     for (size_t j = 0; j < levels.size(); ++j)
@@ -53,7 +54,7 @@ std::vector<std::pair<int, double>> partial_areas(const DomainMesh& m, double sc
             index.push_back((int)j);
         }
     std::vector<double> a = area_above_levels(m, t2);
-    std::vector<std::pair<int, double>> out;
+    Partial out;
     for (size_t k = 0; k < a.size(); ++k) out.push_back({index[k], a[k] * scale * scale});
     return out;
 }
@@ -134,7 +135,6 @@ TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::
 
 // Exact area above each level, summed over the targets in index order (deterministic).
 // `partials` (one per target) instead of the first pass's own, if given.
-using Partial = std::vector<std::pair<int, double>>;
 std::vector<double> level_areas(const std::vector<TargetPass>& pass, const std::vector<double>& levels,
                                 const std::vector<Partial>* partials = nullptr) {
     std::vector<double> A(levels.size(), 0.0);
@@ -208,7 +208,6 @@ struct Bracket {
     double alo, ahi;           // A(lo), A(hi)
     bool done;
     double estimate = -1;      // where the first pass's estimate puts it (< 0: none)
-    int passes = 0;
     int kept_lo = 0, kept_hi = 0;  // passes in a row that moved only the other end (Illinois)
     double last_width = HUGE_VAL;  // hi - lo before the last pass
     // The next levels to clip at: a guess, and either side of it at distances delta and 4, 16 or
@@ -227,7 +226,7 @@ struct Bracket {
     void levels(double width, const Known& known, std::vector<double>& out) const {
         const double mid = 0.5 * (lo + hi);
         double guess = NAN, delta = 0, far = 32;
-        if (passes == 0 && estimate > lo && estimate < hi) {
+        if (last_width == HUGE_VAL && estimate > lo && estimate < hi) {  // no pass yet
             guess = estimate;
             delta = 0.025 * estimate;
             far = 4;
@@ -270,15 +269,19 @@ struct Bracket {
         guess = g;
         delta = 2 * err;
     }
-    void update(const std::vector<double>& levels, const std::vector<double>& A) {
-        const double old_lo = lo, old_hi = hi;
-        last_width = hi - lo;
-        ++passes;
+    // The narrowest bracket the exact areas A at `levels` (ascending) certify.
+    void narrow(const std::vector<double>& levels, const std::vector<double>& A) {
         for (size_t j = 0; j < levels.size(); ++j) {
             if (levels[j] <= lo || levels[j] >= hi) continue;
             if (A[j] > goal) { lo = levels[j]; alo = A[j]; }
             else { hi = levels[j]; ahi = A[j]; break; }
         }
+    }
+    // After a pass: narrowed, and the counts of the Illinois rule and of the halving kept.
+    void update(const std::vector<double>& levels, const std::vector<double>& A) {
+        const double old_lo = lo, old_hi = hi;
+        last_width = hi - lo;
+        narrow(levels, A);
         kept_lo = lo == old_lo ? kept_lo + 1 : 0;
         kept_hi = hi == old_hi ? kept_hi + 1 : 0;
     }
@@ -321,12 +324,15 @@ std::vector<double> percentile_goals(const StatsOptions& opt, double area) {
     return goals;
 }
 
-// `est`: estimate_levels of the goals, `known`: the first pass's levels (0 among them) and their
-// exact areas above, `top`: the largest distance.
+// `est`: estimate_levels of the goals, `first` and `first_area`: the first pass's levels (0 the
+// first of them) and their exact areas above, `top`: the largest distance.
 void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>& pass, const std::vector<double>& est,
-                 Known known, double top, const StatsOptions& opt, MeshCache& cache, SurfaceStats& out) {
+                 const std::vector<double>& first, const std::vector<double>& first_area, double top,
+                 const StatsOptions& opt, MeshCache& cache, SurfaceStats& out) {
     const std::vector<double> goals = percentile_goals(opt, out.area);
-    const double a0 = known.front().second;  // above 0
+    const double a0 = first_area.front();  // above 0
+    Known known;
+    for (size_t j = 0; j < first.size(); ++j) known.push_back({first[j], first_area[j]});
     auto add_known = [&](double t, double a) {
         const auto it = std::lower_bound(known.begin(), known.end(), std::make_pair(t, -HUGE_VAL));
         if (it == known.end() || it->first != t) known.insert(it, {t, a});
@@ -337,11 +343,7 @@ void percentiles(const VoxelGrid& grid, int side, const std::vector<TargetPass>&
         Bracket b{0, top, goals[k], a0, 0, false};
         if (a0 <= goals[k]) { b.hi = 0; b.done = true; }  // d = 0 on enough of the surface
         b.estimate = est[k];
-        for (const auto& [t, a] : known)  // the first pass's levels (histogram, tolerance) narrow it already
-            if (!b.done && t > b.lo && t < b.hi) {
-                if (a > b.goal) b.lo = t, b.alo = a;
-                else b.hi = t, b.ahi = a;
-            }
+        if (!b.done) b.narrow(first, first_area);  // the first pass's levels (histogram, tolerance)
         br.push_back(b);
     }
     for (int guard = 0; guard < 200; ++guard) {
@@ -448,9 +450,7 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     if (!opt.percentiles.empty()) {
         const std::vector<double> est = estimate_levels(pass, percentile_goals(opt, out.area));
         for (TargetPass& p : pass) p.estimate = {};  // (one piece per domain: free it for the passes)
-        Known known;
-        for (size_t j = 0; j < levels.size(); ++j) known.push_back({levels[j], A[j]});
-        percentiles(grid, side, pass, est, known, std::max(dmax, out.max), opt, cache, out);
+        percentiles(grid, side, pass, est, levels, A, std::max(dmax, out.max), opt, cache, out);
     }
     out.seconds_percentiles = std::chrono::duration<double>(Clock::now() - t1).count();
     return out;
