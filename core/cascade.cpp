@@ -31,6 +31,7 @@
 #include <mutex>
 #include <numeric>
 
+#include "confirm_top.h"
 #include "parallel.h"
 #include "point_triangle.h"
 #include "target_solver.h"
@@ -364,6 +365,9 @@ private:
             // bounds are exact point-triangle distances, the solver's values carry rounding.
             const double b = std::sqrt(std::max(bound_sq_[t].load(), std::max(best_sq_[t].load(), 0.0)));
             out_.bound[t] = b * (1 + kTieMargin) + 1e-11 * (coord_ + 1);
+            // A sliver target not solved whole: how far its true maximum may lie above its solved
+            // pieces' values, as paper mode has it (solving it whole below records its own).
+            out_.slack[t] = sliver_slack(A_.corners(t));
             if (best_sq_[t] >= l) ties.push_back(t);
         }
         for (;;) {
@@ -380,16 +384,20 @@ private:
             if (e < 0) break;  // nothing solved whole: the driver's safety net
             // Pieces were dropped or stopped below the threshold of L; where E < L some may still be
             // above that of E (the bounds are upper bounds of the exact values, as compared above).
+            // So are the targets the certificate's confirmation of the top looks at (those that can
+            // reach E within their domain meshes' vertex error): with their exact values, its set,
+            // order and bound are paper mode's (independent pairs 2550, 2998, 3878: near-coincident
+            // copies whose upper ends differed by up to 4e-11 relative between the modes).
             const double le = tie_threshold_sq(e, coord_);
             ties.clear();
-            for (uint32_t t = 0; t < n; ++t)
-                if (!out_.exact[t] && std::max(bound_sq_[t].load(), best_sq_[t].load()) >= le) ties.push_back(t);
+            for (uint32_t t = 0; t < n; ++t) {
+                if (out_.exact[t]) continue;
+                if (std::max(bound_sq_[t].load(), best_sq_[t].load()) >= le ||
+                    can_reach(A_.corners(t), out_.bound[t], out_.slack[t], std::sqrt(e)))
+                    ties.push_back(t);
+            }
             if (ties.empty()) break;
         }
-        // A sliver target not solved whole: how far its true maximum may lie above its solved pieces'
-        // values, as paper mode has it (the certificate's reach and open targets use it).
-        for (uint32_t t = 0; t < n; ++t)
-            if (!out_.exact[t]) out_.slack[t] = sliver_slack(A_.corners(t));
     }
 
     const VoxelGrid& grid_;

@@ -288,6 +288,10 @@ Vec2 polish(const MeshGrid& g, const Target& tg, Vec2 uv, double h, double& valu
 
 // Kept whole (~70 lines): the subdivision of each target shares the running largest distance, the
 // raised witness and the node budgets with the loop over targets.
+bool can_reach(const std::array<Vec3, 3>& corners, double bound, double slack, double L) {
+    return !(bound + kReach * longest_edge(corners) + slack < L);  // (a NaN bound too)
+}
+
 TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol, double coord) {
     const TriangleMesh& A = grid.mesh(side);
     const MeshGrid& g = grid.of(1 - side);
@@ -301,7 +305,7 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
     // The targets that can reach the result, highest first (they get the budget first).
     std::vector<uint32_t> order;
     for (uint32_t t = 0; t < A.num_triangles(); ++t) {
-        if (!(tab.bound[t] + kReach * longest_edge(A.corners(t)) + tab.slack[t] < L)) order.push_back(t);  // (a NaN bound too)
+        if (can_reach(A.corners(t), tab.bound[t], tab.slack[t], L)) order.push_back(t);
     }
     std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return tab.bound[x] > tab.bound[y]; });
     std::vector<Sub> stack;

@@ -1,6 +1,7 @@
 // The certified interval's upper end, checked independently of the domain meshes: a branch and
 // bound over the targets whose value can reach the result (see confirm_top.cpp).
 #pragma once
+#include <array>
 #include <cstdint>
 
 #include "vec.h"
@@ -19,6 +20,11 @@ struct TopConfirmation {
     double value = 0;          // its distance to the other mesh, as computed here
     size_t targets = 0, closed = 0, nodes = 0;  // targets looked at, closed, and sub-triangles
 };
+
+// Whether a target (its corners, its value or bound in the table, its slack) can reach `L` within
+// its domain mesh's vertex error: the targets confirm_top looks at. Fast mode solves whole every
+// target that can reach the result (cascade.cpp), so the set, and the confirmation, are paper mode's.
+bool can_reach(const std::array<Vec3, 3>& corners, double bound, double slack, double L);
 
 // `best`: the result the domain meshes give (the largest exact value). `tol`: a sub-triangle is
 // done once its bound is within tol of the largest distance measured, or its radius below tol; a

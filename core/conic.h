@@ -61,13 +61,15 @@ inline bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel
 }
 
 // The tie rule: two quadratics are one polynomial when they differ by no more than their rounding
-// can make, for inputs known to within `delta` (frame units): relatively 1e-11, or absolutely
-// 2 sqrt(s) delta + delta^2 for coefficients of size s (a squared distance h^2 whose h is off by
-// delta is off by that). Coplanar sources' quadratics at height ~0 differ by noise far below 1e-11
-// of themselves; distinct ones (heights differing by more than delta) never tie.
-inline bool same_quadratic(const Quadratic2& p, const Quadratic2& q, double delta) {
+// can make, for inputs known to within `delta` (frame units): relatively `rel` (1e-11), or
+// absolutely 2 sqrt(s) delta + delta^2 for coefficients of size s (a squared distance h^2 whose h
+// is off by delta is off by that). Coplanar sources' quadratics at height ~0 differ by noise far
+// below 1e-11 of themselves; distinct ones (heights differing by more than delta) never tie.
+// Between a face's quadratic and an edge's or a corner's the relative allowance is 1e-13
+// (same_feature_quadratic in regions.h).
+inline bool same_quadratic(const Quadratic2& p, const Quadratic2& q, double delta, double rel = 1e-11) {
     const double s = std::max(p.scale(), q.scale()), d = (p - q).scale();
-    return d <= 1e-11 * s || d <= 2 * std::sqrt(s) * delta + delta * delta;
+    return d <= rel * s || d <= 2 * std::sqrt(s) * delta + delta * delta;
 }
 
 // The line n.x = offset as a linear quadratic (f >= 0 on the side n points to).

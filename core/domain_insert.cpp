@@ -65,6 +65,7 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
     // not ties before ties now: then every edge is compared (since = 0; Degenerate.LargerTieAllowance...).
     const bool unchanged = !L && vertices_.size() == nv && edges_.size() == ne && relabels_ == nr;
     if (unchanged && !grew) return false;
+    detach_orphan_loops(since);
     if (!merge_equal_neighbours(L, since) && unchanged) return false;
     dissolve_collinear_vertices();
     return true;
@@ -145,7 +146,7 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
         give_to_region(P, src, reg, L);
         return;
     }
-    if (same_quadratic(faces_[P].poly, reg.poly, delta_)) return;  // the existing domain keeps it (a tie)
+    if (same_feature_quadratic(faces_[P].poly, faces_[P].label.region, reg.poly, reg.kind, delta_)) return;  // the existing domain keeps it (a tie)
     Quadratic2 Q = faces_[P].poly - reg.poly;                // > 0 where the source is nearer
     std::vector<SplitPiece>& pieces = tmp_.pieces;
     split_face_into(P, Q, pieces);
@@ -199,6 +200,51 @@ void DomainMesh::remove_edge(int e) {
     half_[h].face = half_[t].face = -1;
 }
 
+// A loop of a face that its outer loop does not enclose, of no area (a spike: two vertices 7e-7
+// apart and a third on the first), is left over where many boundaries meet at a sliver source's
+// corner: rebuild_faces gives such a cycle, a "hole" in no outer loop, to the first face it
+// builds, which then touched its neighbours along arcs where d^2 differed by 0.07 (independent
+// pairs 1682 and 3330: a coplanar needle's tip). It belongs to no face's interior: it becomes a
+// face of its own, with the quadratic and label of the face across its longest arc, and the
+// merging joins the two. True if one was found.
+bool DomainMesh::detach_orphan_loops(uint64_t since) {
+    bool any = false;
+    const size_t n = faces_.size();
+    for (size_t f = 1; f < n; ++f) {
+        if (!faces_[f].alive || faces_[f].infinite || faces_[f].loops.size() < 2) continue;
+        if (since > 0 && !((size_t)f < face_stamp_.size() && face_stamp_[f] > since)) continue;
+        for (size_t k = 1; k < faces_[f].loops.size(); ++k) {
+            const int h0 = faces_[f].loops[k];
+            if (std::fabs(loop_area(h0)) > kCluster * kCluster) continue;
+            const Edge& E0 = edges_[h0 >> 1];
+            if (loop_crossings(faces_[f].loops[0], E0.curve(0.5 * (E0.z0 + E0.z1))) & 1) continue;  // inside: a hole
+            int across = -1, h = h0;
+            double longest = -1;
+            do {
+                const double len = norm(vertices_[target(h)].p - vertices_[half_[h].origin].p);
+                const int g = half_[h ^ 1].face;
+                if (g > 0 && g != (int)f && faces_[g].alive && !faces_[g].infinite && len > longest) longest = len, across = g;
+                h = half_[h].next;
+            } while (h != h0);
+            if (across < 0) continue;
+            Face piece = faces_[across];
+            piece.loops.assign(1, h0);
+            faces_.push_back(piece);
+            const int id = (int)faces_.size() - 1;
+            live_faces_.push_back(id);
+            h = h0;
+            do { half_[h].face = id; h = half_[h].next; } while (h != h0);
+            faces_[f].loops.erase(faces_[f].loops.begin() + (long)k);
+            --k;
+            touch_face(id);
+            touch_face((int)f);
+            ++stats_.warnings;
+            any = true;
+        }
+    }
+    return any;
+}
+
 bool DomainMesh::merge_equal_neighbours(const Listener* L, uint64_t since) {
     auto touched = [&](int f) { return (size_t)f < face_stamp_.size() && face_stamp_[f] > since; };
     bool changed = true, any = false;
@@ -214,7 +260,7 @@ bool DomainMesh::merge_equal_neighbours(const Listener* L, uint64_t since) {
             if (since > 0 && !touched(F) && !touched(G)) continue;
             const Face &fa = faces_[F], &fb = faces_[G];
             bool equal = F == G || (fa.infinite && fb.infinite) ||
-                         (!fa.infinite && !fb.infinite && same_quadratic(fa.poly, fb.poly, delta_));
+                         (!fa.infinite && !fb.infinite && same_feature_quadratic(fa.poly, fa.label.region, fb.poly, fb.label.region, delta_));
             if (!equal) continue;
             int keep = std::min(F, G), gone = std::max(F, G);
             std::vector<int>& hes = tmp_.merge_hes;

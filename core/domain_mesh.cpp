@@ -593,7 +593,7 @@ std::string DomainMesh::validate(double area_tol) const {
         int F = half_[2 * e].face, G = half_[2 * e + 1].face;
         if (!(F > 0 && G > 0 && F != G && !faces_[F].infinite && !faces_[G].infinite)) continue;
         const Quadratic2 &qF = faces_[F].poly, &qG = faces_[G].poly;
-        if (same_quadratic(qF, qG, delta_))
+        if (same_feature_quadratic(qF, faces_[F].label.region, qG, faces_[G].label.region, delta_))
             return std::snprintf(buf, sizeof buf, "faces %d and %d are neighbours with the same polynomial", F, G), buf;
         // d^2 is continuous: across an arc the two domains' quadratics agree, up to the arc lying
         // kOffCurve off where they meet, or a sliver that narrow dropped between them (where a

@@ -105,7 +105,7 @@ void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const R
 bool DomainMesh::region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox) {
     const Face& face = faces_[F];
     if (face.infinite) return false;
-    if (same_quadratic(face.poly, reg.poly, delta_)) return true;  // a tie: the domain keeps it
+    if (same_feature_quadratic(face.poly, face.label.region, reg.poly, reg.kind, delta_)) return true;  // a tie: the domain keeps it
     Quadratic2 g = face.poly - reg.poly;
     const double gs = g.scale();
     if (!(gs > 0)) return false;

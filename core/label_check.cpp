@@ -72,7 +72,7 @@ std::vector<int> tie_classes(const std::vector<SourceProjection>& proj, double d
     };
     for (size_t a = 0; a < feat.size(); ++a)
         for (size_t b = a + 1; b < feat.size(); ++b)
-            if (same_quadratic(*feat[a].second, *feat[b].second, delta)) {
+            if (same_feature_quadratic(*feat[a].second, (Region)(feat[a].first % 8), *feat[b].second, (Region)(feat[b].first % 8), delta)) {
                 const int x = find(feat[a].first), y = find(feat[b].first);
                 if (x != y) cls[std::max(x, y)] = std::min(x, y);
             }

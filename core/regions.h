@@ -29,6 +29,19 @@ struct TargetFrame {
 enum class Region : uint8_t { abc = 0, ab, bc, ca, a, b, c };
 const char* region_name(Region r);
 
+// The tie rule (same_quadratic) for the quadratics of two features of the kinds `kp` and `kq`.
+// A face's quadratic and an edge's (or a corner's) differ by the square of the distance, within
+// the face's plane, from the edge: times the square of the plane's tilt from T''s normal, which
+// is geometry, not rounding, however small against the quadratics' size. So they tie only to
+// 1e-13 relative (their rounding is ~1e-16): a source standing 2e-6 off the vertical with its edge
+// 1e-6 under T' has the two 4e-12 apart where d^2 is 5e-6, and with the allowance of 1e-11 the
+// face's domain took the edge's polynomial, 3e-7 above d^2 (independent pair 803). Edges and
+// corners among themselves, and faces among themselves, keep 1e-11: three corners rounded off a
+// line 1e8 from the origin make edges 5e-12 apart, and cutting between them makes conics of noise.
+inline bool same_feature_quadratic(const Quadratic2& p, Region kp, const Quadratic2& q, Region kq, double delta) {
+    return same_quadratic(p, q, delta, (kp == Region::abc) != (kq == Region::abc) ? 1e-13 : 1e-11);
+}
+
 // inside: n.p >= offset. `all` and `none` for boundary planes parallel to the target's plane.
 struct HalfPlane {
     Vec2 n;

@@ -577,7 +577,7 @@ std::string TargetSolver::validate(bool thorough) const {
         for (const SourceProjection& p : proj)
             if ((int)p.source == L.source) own = &p;
         const Quadratic2* q = own ? region_quadratic(*own, L.region) : nullptr;
-        if (thorough && (!q || !same_quadratic(*q, F[f].poly, delta)))
+        if (thorough && (!q || !same_feature_quadratic(*q, L.region, F[f].poly, L.region, delta)))
             return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): the label's quadratic is not the domain's", f,
                                  L.source, region_name(L.region)), buf;
         // The features tied with it (the same quadratic), through a chain (tie_classes: merging
@@ -589,7 +589,7 @@ std::string TargetSolver::validate(bool thorough) const {
             std::vector<int> seed;
             for (size_t s = 0; s < proj.size(); ++s)
                 for (const SourceRegion& r : proj[s].regions)
-                    if (same_quadratic(r.poly, F[f].poly, delta)) seed.push_back(classes[feature_index(s, r.kind)]);
+                    if (same_feature_quadratic(r.poly, r.kind, F[f].poly, L.region, delta)) seed.push_back(classes[feature_index(s, r.kind)]);
             for (size_t s = 0; s < proj.size(); ++s)
                 for (const SourceRegion& r : proj[s].regions)
                     if (std::find(seed.begin(), seed.end(), classes[feature_index(s, r.kind)]) != seed.end()) tied.push_back(&r);

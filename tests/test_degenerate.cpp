@@ -490,6 +490,85 @@ TEST(Degenerate, MirroredNearlyFlatTrianglesKeepTheirMaximum) {
         }
 }
 
+// Every target of both meshes, in the paper's order and nearest first: the thorough validate()
+// after every insertion.
+static void validate_every_insertion(const TriangleMesh& A, const TriangleMesh& B) {
+    const VoxelGrid grid(A, B);
+    for (int side = 0; side < 2; ++side)
+        for (uint32_t t = 0; t < grid.mesh(side).num_triangles(); ++t)
+            for (bool nearest : {false, true}) {
+                SCOPED_TRACE(side);
+                SCOPED_TRACE(t);
+                SCOPED_TRACE(nearest);
+                TargetSolver ts(grid, side, t);
+                ts.nearest_first(nearest);
+                ts.validate_each_insertion(true);
+                EXPECT_NO_THROW(while (ts.step()) {});
+            }
+}
+
+// Independent pair "perpendicular" 803: a strip of B standing on end, its bottom edge 0.004 (1.2e-6 of
+// the target's size) under the plane of A and its plane tilted from the vertical by 2e-6. Over
+// most of A's target 0 the nearest point of B is inside that face, not on its bottom edge; the two
+// quadratics differ by 4e-12 of their size, and d^2 is 5e-6 there. The tie rule's old relative
+// allowance, 1e-11, made them one polynomial: the face's domain merged with the edge's and took
+// its quadratic, 2.8e-7 relative above d^2. validate() after every insertion checks the domains'
+// polynomials against direct distances, both orders, every target.
+TEST(Degenerate, SourceStandingJustUnderTheTargetKeepsItsFacesQuadratic) {
+    const std::vector<Vec3> pa = {{-41937.202529802409, -64185.613806275302, -29345.36813588511},
+                                  {-38828.419358279207, -64185.613806275302, -29345.36813588511},
+                                  {-41937.202529802409, -63149.352749100901, -29345.36813588511},
+                                  {-38828.419358279207, -63149.352749100901, -29345.36813588511},
+                                  {-41937.202529802409, -62113.0916919265, -29345.36813588511},
+                                  {-38828.419358279207, -62113.0916919265, -29345.36813588511},
+                                  {-41937.202529802409, -61076.830634752099, -29345.36813588511},
+                                  {-38828.419358279207, -61076.830634752099, -29345.36813588511}};
+    const std::vector<Vec3> pb = {{-40030.505776661623, -64905.597902194742, -29345.372092765047},
+                                  {-40030.505776661623, -63313.933749045427, -29345.372092765047},
+                                  {-40030.505776661623, -61722.269595896112, -29345.372092765047},
+                                  {-40030.502940332604, -64905.597902194742, -27979.536192117856},
+                                  {-40030.502940332604, -63313.933749045427, -27979.536192117856},
+                                  {-40030.502940332604, -61722.269595896112, -27979.536192117856}};
+    const TriangleMesh A = make_mesh(pa, {{0, 1, 3}, {0, 3, 2}, {2, 3, 5}, {2, 5, 4}, {4, 5, 7}, {4, 7, 6}});
+    const TriangleMesh B = make_mesh(pb, {{0, 1, 3}, {1, 4, 3}, {1, 2, 5}, {1, 5, 4}});
+    validate_every_insertion(A, B);
+}
+
+// Independent pair "sliver" 1682: a needle of B lying in the plane of A's target 2, its tip among
+// four nearly concurrent region lines (the needle's edges and their perpendiculars at the tip, 3e-6
+// apart in angle). Cutting there left a cycle of no area (two vertices 7e-7 apart, a third on the
+// first) outside the face it was given to, the far source's domain, where d^2 is 0.07 and near the
+// needle ~0: validate() saw d^2 jump across its arcs. Every target, both orders, every insertion.
+TEST(Degenerate, NeedleTipInTheTargetsPlaneLeavesNoOrphanLoop) {
+    const std::vector<Vec3> pa = {{0, 0, 0},
+                                  {0, -0.0033073253983759458, 0},
+                                  {0, -0.0066146507967518916, 0},
+                                  {0, 0, -0.0066146507967518916},
+                                  {0, -0.0033073253983759458, -0.0066146507967518916},
+                                  {0, -0.0066146507967518916, -0.0066146507967518916},
+                                  {8.7663352248324995e-05, -0.0045977211672926744, -0.005863053570357101},
+                                  {-0.00026654688855382464, -0.0043056917264710027, -0.0019810319213811114},
+                                  {-0.00036738106990451914, -0.0042225587504905104, -0.00087592416893327669}};
+    const std::vector<Vec3> pb = {{0, -0.0038503291818440212, -0.00053221458471414932},
+                                  {0, -0.0029045010330511446, -0.00086465872144181691},
+                                  {0, -0.003236318838321844, -0.00074803173138813758},
+                                  {-0.00016779522687527932, -0.00014389475492063199, -6.1115047599498955e-05},
+                                  {0, -0.0028089782027646477, -0.0037244183981377057},
+                                  {-4.7528622226192049e-05, -0.0020540834018718812, -0.0026867740963472421},
+                                  {0, -0.0057282642642098956, -0.0011941632293180869},
+                                  {-7.73962342149124e-05, -0.0036380115750568216, -0.0065851249199033292},
+                                  {-6.3864308474734956e-05, -0.0040034704950529442, -0.0056425713964007931},
+                                  {0.00019246749963915558, -0.0043012817870835534, -0.0059994810814565733},
+                                  {0, -0.0063331170654544258, -0.0061635675713407395},
+                                  {0.00027756115910692561, -0.0034029675283361927, -0.0059269352234189209},
+                                  {0, -0.0057282642642098956, -0.0011941632293180869},
+                                  {-7.73962342149124e-05, -0.0036380115750568216, -0.0065851249199033292},
+                                  {-6.3864308474734956e-05, -0.0040034704950529442, -0.0056425713964007931}};
+    const TriangleMesh A = make_mesh(pa, {{0, 1, 4}, {0, 4, 3}, {1, 2, 4}, {2, 5, 4}, {6, 7, 8}});
+    const TriangleMesh B = make_mesh(pb, {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}});
+    validate_every_insertion(A, B);
+}
+
 // Degenerate pair "mirror" 16298 of an independent generator: four triangles, each with an edge in
 // the plane z = 0, against their mirror images. On target 3, two sources' edge quadratics differ by
 // a line pair whose centre lies at a corner of a domain; the crossing on the arc beside it was
