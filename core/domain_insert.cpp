@@ -65,7 +65,7 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
     // not ties before ties now: then every edge is compared (since = 0; Degenerate.LargerTieAllowance...).
     const bool unchanged = !L && vertices_.size() == nv && edges_.size() == ne && relabels_ == nr;
     if (unchanged && !grew) return false;
-    detach_orphan_loops(since);
+    detach_orphan_loops(since, L);
     if (!merge_equal_neighbours(L, since) && unchanged) return false;
     dissolve_collinear_vertices();
     return true;
@@ -206,8 +206,9 @@ void DomainMesh::remove_edge(int e) {
 // builds, which then touched its neighbours along arcs where d^2 differed by 0.07 (independent
 // pairs 1682 and 3330: a coplanar needle's tip). It belongs to no face's interior: it becomes a
 // face of its own, with the quadratic and label of the face across its longest arc, and the
-// merging joins the two. True if one was found.
-bool DomainMesh::detach_orphan_loops(uint64_t since) {
+// merging joins the two (the listener sees it created, relabelled from the face it left, then
+// merged). True if one was found.
+bool DomainMesh::detach_orphan_loops(uint64_t since, const Listener* L) {
     bool any = false;
     const size_t n = faces_.size();
     for (size_t f = 1; f < n; ++f) {
@@ -240,6 +241,7 @@ bool DomainMesh::detach_orphan_loops(uint64_t since) {
             touch_face((int)f);
             ++stats_.warnings;
             any = true;
+            if (L && L->on_relabel) L->on_relabel(id, faces_[f].label, faces_[id].label);
         }
     }
     return any;
