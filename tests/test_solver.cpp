@@ -4,8 +4,12 @@
 // insertion.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <cstdio>
 #include <random>
+#include <string>
 
 #include <hlens/bounds.h>
 #include <hlens/cascade.h>
@@ -507,12 +511,16 @@ TEST(ExportCase, ReproducesTheTargetsMaximumOnItsOwn) {
     TriangleMesh B = height_field(6, [](double x, double y) { return 0.25 * std::sin(2 * x) * std::cos(3 * y); });
     TriangleMesh A = height_field(3, [](double x, double y) { return 0.3 + 0.1 * x * y; });
     VoxelGrid grid(A, B);
-    std::string dir = ::testing::TempDir();
+    // Names of this process's own (concurrent runs share the temporary directory), removed after.
+    const std::string stem = ::testing::TempDir() + "/hlens_case_" + std::to_string((long)getpid());
+    const std::string tpath = stem + "_t.obj", spath = stem + "_s.obj";
     for (uint32_t t : {0u, 7u, 17u}) {
         TargetSolver whole(grid, 0, t);
         whole.run();
-        export_case(grid, 0, t, dir + "/case_t.obj", dir + "/case_s.obj");
-        TriangleMesh a = load_mesh(dir + "/case_t.obj", {false}), b = load_mesh(dir + "/case_s.obj", {false});
+        export_case(grid, 0, t, tpath, spath);
+        TriangleMesh a = load_mesh(tpath, {false}), b = load_mesh(spath, {false});
+        std::remove(tpath.c_str());
+        std::remove(spath.c_str());
         EXPECT_EQ(a.num_triangles(), 1u);
         EXPECT_EQ((int)b.num_triangles(), whole.insertions());
         EXPECT_LT(b.num_triangles(), B.num_triangles());  // only the relevant ones
