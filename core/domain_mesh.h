@@ -254,6 +254,7 @@ private:
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
+    bool split_arc_on_the_curve(SplitCall& s, int e);
     bool snap_to_end(SplitCall& s, int e, Vec2 p, double tol);
     bool past_end(int e, Vec2 p) const;
     bool duplicate_chord(const Chord& c) const;

@@ -350,6 +350,7 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
         const double ge = along(end ? edges_[e].z1 : edges_[e].z0);
         if ((gv > 0 && ge < 0) || (gv < 0 && ge > 0)) s.mark_zero(v);
     }
+    if (edges_[e].curve.straight() && split_arc_on_the_curve(s, e)) return;
     if (edges_[e].curve.straight() && split_at_touching_point(s, e, along)) return;
     if (no_sign_change(along, edges_[e].z0, edges_[e].z1)) return;  // most arcs: nothing to find
     const RationalCurve curve = edges_[e].curve;   // copies: split_edge may move edges_
@@ -390,6 +391,43 @@ bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along)
     if (!(z > edges_[e].z0 && z < edges_[e].z1) || !(std::fabs(C - B * B / (4 * A)) <= kZero)) return false;
     const Vec2 p = edges_[e].curve(z);
     if (!(norm(s.g.gradient(p)) <= 1e-6)) return false;  // a tangent conic: nothing ends there
+    if (!snap_to_end(s, e, p, kSnap)) s.mark_zero(split_edge(e, z));
+    return true;
+}
+
+// A straight arc along one line of a line pair g = 0 (both its ends within kOnCurve of that
+// line): the signs of g along it are those of its distance from the line, rounding noise, times
+// the other line's; the one point where g really changes sign on it is where the other line
+// crosses it, the pair's centre, and that line's chord ends there. So the arc is split at the
+// centre (or its end there is on the curve), and nowhere else. (Independent pair "fan" 5577: two
+// nearly coplanar sources sharing an edge, a domain's boundary 2e-11 from the line their planes
+// meet on; g along it was 1e-12, its root 3.6e-5 from the centre, the other line's chord had no end
+// and a third of the face kept the farther source.) True if the arc lies along such a line (then
+// nothing else is looked for on it).
+bool DomainMesh::split_arc_on_the_curve(SplitCall& s, int e) {
+    const Quadratic2& g = s.g;  // a x^2 + 2b xy + c y^2 + 2d x + 2e y + f
+    const double det = g.a * g.c - g.b * g.b;
+    if (!(det < 0)) return false;  // not a line pair (nor a hyperbola near one)
+    const double z0 = edges_[e].z0, z1 = edges_[e].z1;
+    const Vec2 a = edges_[e].curve(z0), b = edges_[e].curve(z1);
+    for (const Vec2 p : {a, b})
+        if (!(std::fabs(g(p)) <= kOnCurve * norm(g.gradient(p)))) return false;
+    ConicDecomposition& dec = tmp_.dec;  // (find_chords decomposes g again)
+    decompose_conic(g, dec);
+    if (dec.type != ConicType::LinePair || dec.components.size() != 2) return false;
+    bool along = false;
+    for (const CurveComponent& line : dec.components)
+        along = along || (off_component(line, a) <= kOnCurve && off_component(line, b) <= kOnCurve);
+    if (!along) return false;
+    const CurveComponent &l1 = dec.components[0], &l2 = dec.components[1];
+    const double den = cross(l1.u, l2.u);
+    if (den == 0) return true;
+    const Vec2 m = l1.c + (cross(l2.c - l1.c, l2.u) / den) * l1.u;
+    const double t = dot(m - a, b - a) / norm2(b - a);
+    if (!(t > 0 && t < 1)) return true;
+    const double z = z0 + t * (z1 - z0);
+    const Vec2 p = edges_[e].curve(z);
+    if (!(norm(p - m) <= kCluster)) return true;  // the centre is not on this arc
     if (!snap_to_end(s, e, p, kSnap)) s.mark_zero(split_edge(e, z));
     return true;
 }

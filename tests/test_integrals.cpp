@@ -101,6 +101,26 @@ TEST(DomainSplit, LinePairCentredOnTheBoundary) {
     }
 }
 
+// A face's edge along one line of a line pair (independent pair "fan" 5577: two nearly coplanar
+// sources sharing an edge): g = (x + y - 1 + delta)(x - y - 1/5) on the unit right triangle, whose
+// hypotenuse lies on (or delta off) the first line. Along it g is rounding noise times the second
+// line, so its sign changes there were noise; the one that matters, the centre (3/5, 2/5), was
+// found 1e-5 off the second line, whose chord then had no end, and the face stayed whole. The
+// chord from (1/5, 0) to the centre cuts off g < 0 on the right (area 4/25).
+TEST(DomainSplit, EdgeAlongOneLineOfALinePair) {
+    for (double delta : {0.0, 1e-12, -1e-12, 1e-10}) {
+        SCOPED_TRACE(delta);
+        const double k = delta - 1;
+        DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+        const auto pieces = m.split_face(1, Quadratic2{1, 0, -1, (k - 0.2) / 2, (-k - 0.2) / 2, -0.2 * k});
+        double pos = 0, neg = 0;
+        for (auto piece : pieces) (piece.sign > 0 ? pos : neg) += m.face_area(piece.face);
+        EXPECT_EQ(pieces.size(), 2u);
+        EXPECT_NEAR(neg, 4.0 / 25, 1e-9);
+        EXPECT_NEAR(pos, 0.5 - 4.0 / 25, 1e-9);
+    }
+}
+
 // A chord whose ends lie within kCluster (1e-7) of each other can still cut off a piece that
 // reaches far from the curve: here the tip of a wedge 0.01 wide at x = 1, cut by x = 5e-6 (ends
 // 5e-8 apart, the tip 5e-6 from the line). It was dropped as "one crossing point" and the tip kept
