@@ -286,12 +286,12 @@ Vec2 polish(const MeshGrid& g, const Target& tg, Vec2 uv, double h, double& valu
 
 }  // namespace
 
-// Kept whole (~70 lines): the subdivision of each target shares the running largest distance, the
-// raised witness and the node budgets with the loop over targets.
 bool can_reach(const std::array<Vec3, 3>& corners, double bound, double slack, double L) {
     return !(bound + kReach * longest_edge(corners) + slack < L);  // (a NaN bound too)
 }
 
+// Kept whole (~70 lines): the subdivision of each target shares the running largest distance, the
+// raised witness and the node budgets with the loop over targets.
 TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol, double coord) {
     const TriangleMesh& A = grid.mesh(side);
     const MeshGrid& g = grid.of(1 - side);

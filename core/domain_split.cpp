@@ -31,6 +31,14 @@ constexpr double kTwoPi = 6.283185307179586;
 // to its distance from it).
 double off_component(const CurveComponent& comp, Vec2 p) { return norm(comp.at(comp.param_of(p)) - p); }
 
+// Where the two lines of a line pair cross (false if they are parallel).
+bool line_pair_centre(const CurveComponent& l1, const CurveComponent& l2, Vec2& m) {
+    const double den = cross(l1.u, l2.u);
+    if (den == 0) return false;
+    m = l1.c + (cross(l2.c - l1.c, l2.u) / den) * l1.u;
+    return true;
+}
+
 double wrap2pi(double a) {
     a = std::fmod(a, kTwoPi);
     return a < 0 ? a + kTwoPi : a;
@@ -419,10 +427,8 @@ bool DomainMesh::split_arc_on_the_curve(SplitCall& s, int e) {
     for (const CurveComponent& line : dec.components)
         along = along || (off_component(line, a) <= kOnCurve && off_component(line, b) <= kOnCurve);
     if (!along) return false;
-    const CurveComponent &l1 = dec.components[0], &l2 = dec.components[1];
-    const double den = cross(l1.u, l2.u);
-    if (den == 0) return true;
-    const Vec2 m = l1.c + (cross(l2.c - l1.c, l2.u) / den) * l1.u;
+    Vec2 m;
+    if (!line_pair_centre(dec.components[0], dec.components[1], m)) return true;
     const double t = dot(m - a, b - a) / norm2(b - a);
     if (!(t > 0 && t < 1)) return true;
     const double z = z0 + t * (z1 - z0);
@@ -533,9 +539,8 @@ void DomainMesh::hyperbola_as_line_pair(const Quadratic2& g, ConicDecomposition&
 // The two lines of a line pair cross at the centre: inside the face it must be a vertex of both.
 void DomainMesh::add_line_pair_centre(SplitCall& s) {
     const CurveComponent &l1 = tmp_.dec.components[0], &l2 = tmp_.dec.components[1];
-    double den = cross(l1.u, l2.u);
-    if (den == 0) return;
-    Vec2 m = l1.c + (cross(l2.c - l1.c, l2.u) / den) * l1.u;
+    Vec2 m;
+    if (!line_pair_centre(l1, l2, m)) return;
     // Near the centre g is a product of two small distances: a vertex on the curve (|g| <= kZero)
     // may lie on either line, 1e-7 from neither. The vertex within kOffCurve of both lines (so
     // that validate() accepts it on both) nearest the centre is the lines' common end (bunny
