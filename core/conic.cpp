@@ -261,7 +261,7 @@ ConicDecomposition decompose_conic(const Quadratic2& q) {
 
 namespace {
 // Relative thresholds: the plane is scaled so the target has unit size.
-constexpr double eps_quad = 1e-12, eps_par = 1e-10, eps_k = 1e-14, eps_lin = 1e-12;
+constexpr double eps_quad = 1e-12, eps_par = 1e-10, eps_k = 1e-14, eps_lin = 1e-12, eps_b2 = 1e-13;
 
 void add_line(ConicDecomposition& out, Vec2 point, Vec2 dir) { out.components.push_back(line_component(point, dir)); }
 
@@ -341,10 +341,15 @@ double roots_moved(double l1, double disc, double dropped) {
 }
 
 // Parabolic: l2 ~ 0, so q = l1 X^2 + 2 b1 X + 2 b2 Y + f: a parabola, or without the Y term two
-// parallel lines, one double line or nothing.
+// parallel lines, one double line or nothing. The Y term is dropped only where it moves the roots
+// by less than 1e-9 over T' (|Y| < 2), however small b2 is: across a thin parabola, 1.4e-5 wide,
+// b2 = 1.8e-11 moved them by 3e-6 (independent pair "mirror" 6506, an edge's sliver between the
+// arms lost). A b2 within its rounding (eps_b2: q's coefficients are at most 1) is not a parabola:
+// where q only touches 0 (a double line, disc ~ 0) b2 = 1e-16 would move its roots by 1e-8
+// (independent pair "parallel_offset" 1389: a parabola 4e15 long cut across a domain).
 void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, double b1, double b2, double disc,
                          ConicDecomposition& out) {
-    if (std::fabs(b2) > eps_par) {
+    if (std::fabs(b2) > eps_par || (std::fabs(b2) > eps_b2 && roots_moved(l1, disc, 4 * std::fabs(b2)) > 1e-9)) {
         // Y = -(l1 X^2 + 2 b1 X + f) / (2 b2), parametrised by X = Xa + t. Anchored at the vertex
         // (Xa = -b1 / l1) unless that lies far outside the target (a nearly flat parabola, as the
         // difference of two sources' edge quadratics often is): there c + t u + t^2 v would be a

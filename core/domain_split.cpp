@@ -25,6 +25,9 @@ constexpr double kZero = 1e-14;     // |g| below this (g scaled to unit size) co
 // along one side only, d^2 off by 0.03; 1e-14 fixed it and fans 905 and 1737, and changed no
 // other result of 3000 of our seeds or 4000 independent ones.)
 constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
+// A vertex this far from a component is still on it where g is flat between them (flat_between):
+// there rounding moves roots by up to 1e-5 ("mirror" 7242), far more than kOffCurve.
+constexpr double kFlatTip = 1e-4;
 constexpr double kTwoPi = 6.283185307179586;
 
 // How far p is from the point of `comp` at p's parameter (its foot on a line; near a conic, close
@@ -608,6 +611,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             // 397, 547, 1147: kept whole, it kept the farther source up to 5e-6 beyond the curve).
             const bool short_chord = !comp.closed() && norm(vertices_[c.va].p - vertices_[c.vb].p) <= kCluster;
             if (!point_in_face(f, mid)) continue;  // one outside is not ours
+            if (flat_boundary_edge(s, c.va, c.vb)) continue;
             if ((short_chord || near_boundary(f, mid, kCluster)) && (boundary_hugs_chord(f, c, kCluster) || !chord_inside(f, c)))
                 continue;
         }
@@ -615,18 +619,49 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
     }
 }
 
+// g within kZero of 0 all the way from p to q: the two are one point of the curve as far as g can
+// tell. Near the tip of a thin hyperbola (the difference of an edge's quadratic and a nearly
+// parallel source's plane quadratic, its tips on the region line between them) g is flat along
+// the axis: a tip found as a root on that line and the tip of the decomposed curve, both rounding
+// amplified by 1 / |l2| ~ 1e10, lie 2.5e-6 apart (independent pair "mirror" 7290).
+bool DomainMesh::flat_between(const Quadratic2& g, Vec2 p, Vec2 q) {
+    for (double k : {0.25, 0.5, 0.75, 1.0})
+        if (!(std::fabs(g(p + k * (q - p))) <= kZero)) return false;
+    return true;
+}
+
+// The chord's arc starts at the foot, not at the vertex: a foot outside the face would put the arc,
+// and a maximum along it, outside T' (our degenerate seed 2865, a zero-area pair: a corner of T'
+// taken as a thin conic's end 7e-6 beyond it, and the maximum with it, 2.7e-6 relative too high).
+bool DomainMesh::foot_in_face(int f, Vec2 q) const { return point_in_face(f, q) || near_boundary(f, q, kCluster); }
+
+// A boundary arc of the face joins u and v (either way), and g is flat along it and between them:
+// a chord of the curve joining them is that arc, as far as g can tell. (Independent pair "mirror"
+// 7242: two roots of g on a region line 1.1e-5 apart, where g along the line is a product of two
+// distances of 1e-6, were joined by a chord along the line; with it the face's pieces were built
+// wrong and a sliver 1.5e-6 wide where the farther source was nearer was lost.)
+bool DomainMesh::flat_boundary_edge(const SplitCall& s, int u, int v) const {
+    const Vec2 pu = vertices_[u].p, pv = vertices_[v].p;
+    if (u == v || !(norm(pu - pv) <= kFlatTip) || !flat_between(s.g, pu, pv)) return false;
+    for (int h : tmp_.hes) {
+        if (!((half_[h].origin == u && target(h) == v) || (half_[h].origin == v && target(h) == u))) continue;
+        if (std::fabs(s.g(he_point(h, 0.5))) <= kZero) return true;
+    }
+    return false;
+}
+
 // Vertex v, on the curve as this split counts it (|g| <= kZero, or an arc's end across g = 0 from
 // it), lies on component `comp` (its parameter t there): within 1e-7 of it, or within kOffCurve
-// and nearer to it than to the curve's other components, or the centre of a line pair
-// (add_line_pair_centre). A vertex counted on the curve but on no component ends no chord: a
-// polished vertex 1.2e-7 off a region line, marked by the arc-end rule, left the line one end and
-// the face uncut (bunny_10 target 17; with this and the chord rules above, the bunny pair's
-// targets failing validate() went from 204 to 6 and from 240 to 9).
+// (kFlatTip where g is flat between them) and nearer to it than to the curve's other components,
+// or the centre of a line pair (add_line_pair_centre). A vertex counted on the curve but on no
+// component ends no chord: a polished vertex 1.2e-7 off a region line, marked by the arc-end
+// rule, left the line one end and the face uncut (bunny_10 target 17; with this and the chord
+// rules above, the bunny pair's targets failing validate() went from 204 to 6 and from 240 to 9).
 bool DomainMesh::on_component(const SplitCall& s, const CurveComponent& comp, int v, double t) const {
-    const Vec2 p = vertices_[v].p;
-    const double d = norm(comp.at(t) - p);
+    const Vec2 p = vertices_[v].p, q = comp.at(t);
+    const double d = norm(q - p);
     if (d <= 1e-7 || v == s.centre) return true;
-    if (!(d <= kOffCurve)) return false;
+    if (!(d <= kOffCurve) && !(d <= kFlatTip && flat_between(s.g, p, q) && foot_in_face(s.f, q))) return false;
     for (const CurveComponent& other : tmp_.dec.components)
         if (&other != &comp && off_component(other, p) < d) return false;
     return true;

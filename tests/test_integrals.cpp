@@ -360,6 +360,19 @@ TEST(DomainSplit, ThinHyperbolaWideningAcrossTheTarget) {
     EXPECT_NEAR(area_where_negative(g), want, 1e-3 * want);
 }
 
+// A parabola 1.4e-5 wide at the frame's origin narrowing to 7.4e-6 at y = 1 (x - 0.5 =
+// +-sqrt(w^2 - 2 beta y)), its linear term beta below the parabolic form's fixed 1e-10: taken as
+// two parallel lines (dropping 2 beta y) it stayed 1.4e-5 wide, 3e-6 off its roots at y = 1, and
+// the vertices found on it were on neither line (independent pair "mirror" 6506: an edge's sliver
+// between the arms lost, d^2 3e-11 too high there).
+TEST(DomainSplit, ThinParabolaWithATinyLinearTerm) {
+    const double beta = 1.76e-11, w = 7e-6;
+    const Quadratic2 g{1, 0, 0, -0.5, beta, 0.25 - w * w};
+    EXPECT_EQ(decompose_conic(g).type, ConicType::Parabola);
+    const double want = integrate([&](long double y) { return 2 * std::sqrt(w * w - 2 * beta * y); }, 0, 1);
+    EXPECT_NEAR(area_where_negative(g), want, 1e-3 * want);
+}
+
 // A point 1e-10 off a thin conic (a branch, an ellipse or a parabola 1e-6 wide and of T''s length)
 // has its foot within about that: the parameter is not read off the coordinate across the conic,
 // which that 1e-10 moves by 1e-4 of the conic's width (degenerate pair "mirror" 3994: a vertex of
