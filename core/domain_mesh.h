@@ -264,7 +264,6 @@ private:
     void add_line_pair_centre(SplitCall& s);
     void add_chords_of_component(SplitCall& s, const CurveComponent& comp);
     bool on_component(const SplitCall& s, const CurveComponent& comp, int v, double t) const;
-    static bool flat_between(const Quadratic2& g, Vec2 p, Vec2 q);
     bool flat_boundary_edge(const SplitCall& s, int u, int v) const;
     bool foot_in_face(int f, Vec2 q) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;

@@ -34,6 +34,17 @@ constexpr double kTwoPi = 6.283185307179586;
 // to its distance from it).
 double off_component(const CurveComponent& comp, Vec2 p) { return norm(comp.at(comp.param_of(p)) - p); }
 
+// g within kZero of 0 all the way from p to q: the two are one point of the curve as far as g can
+// tell. Near the tip of a thin hyperbola (the difference of an edge's quadratic and a nearly
+// parallel source's plane quadratic, its tips on the region line between them) g is flat along
+// the axis: a tip found as a root on that line and the tip of the decomposed curve, both rounding
+// amplified by 1 / |l2| ~ 1e10, lie 2.5e-6 apart (independent pair "mirror" 7290).
+bool flat_between(const Quadratic2& g, Vec2 p, Vec2 q) {
+    for (double k : {0.25, 0.5, 0.75, 1.0})
+        if (!(std::fabs(g(p + k * (q - p))) <= kZero)) return false;
+    return true;
+}
+
 // Where the two lines of a line pair cross (false if they are parallel).
 bool line_pair_centre(const CurveComponent& l1, const CurveComponent& l2, Vec2& m) {
     const double den = cross(l1.u, l2.u);
@@ -617,17 +628,6 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
         }
         if (!duplicate_chord(c)) tmp_.chords.push_back(c);
     }
-}
-
-// g within kZero of 0 all the way from p to q: the two are one point of the curve as far as g can
-// tell. Near the tip of a thin hyperbola (the difference of an edge's quadratic and a nearly
-// parallel source's plane quadratic, its tips on the region line between them) g is flat along
-// the axis: a tip found as a root on that line and the tip of the decomposed curve, both rounding
-// amplified by 1 / |l2| ~ 1e10, lie 2.5e-6 apart (independent pair "mirror" 7290).
-bool DomainMesh::flat_between(const Quadratic2& g, Vec2 p, Vec2 q) {
-    for (double k : {0.25, 0.5, 0.75, 1.0})
-        if (!(std::fabs(g(p + k * (q - p))) <= kZero)) return false;
-    return true;
 }
 
 // The chord's arc starts at the foot, not at the vertex: a foot outside the face would put the arc,
