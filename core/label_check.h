@@ -3,8 +3,8 @@
 // Straub 2007 §3.1: after the sources S_1..S_k are inserted, each domain of T' must be a piece of
 // the lower envelope of their region quadratics, labelled by the feature (source, region) whose
 // quadratic it is. This checks that by brute force, without the domain mesh's geometry: a grid of
-// samples over T', at each the nearest feature found directly in 3D (a point-triangle region
-// test per source, Ericson's "Real-Time Collision Detection" 5.1.5), compared with the label of the
+// samples over T', at each the nearest feature found directly in 3D (per source: the face if the
+// foot lies inside it, else the nearest edge or corner; see nearest_feature), compared with the label of the
 // domain the sample falls in. The debugger's overlay draws the same map; the tests run it after
 // every insertion on degenerate pairs.
 //
@@ -25,7 +25,7 @@
 namespace hlens {
 
 // Squared distance from p to the triangle abc (frame coordinates) and the region of abc its
-// closest point lies in. Degenerate (collinear) triangles get Ericson's answer, which names one
+// closest point lies in. Degenerate (collinear) triangles are their three edges, which names one
 // of the coinciding features; the tie rule makes the name irrelevant where the quadratics agree.
 struct NearestFeature {
     double d2 = HUGE_VAL;

@@ -49,7 +49,7 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a0, const Vec3
     bool inside = y >= 0 && (cx - bx) * (y) - (cy) * (x - bx) >= 0 && (-cx) * (y - cy) - (-cy) * (x - cx) >= 0;
     if (!inside) return min_over_edges(p, a0, b0, c0);  // the closest point is then on the boundary
     double z = dot(w, n);
-    return {*a + ue * x + ug * y, z * z};
+    return {*a + ue * x + ug * y, z * z, true};
 }
 
 }  // namespace hlens

@@ -7,6 +7,7 @@ namespace hlens {
 struct ClosestPoint {
     Vec3 point;    // closest point of the triangle (or segment) to the query
     double dist2;  // squared distance from the query to `point`
+    bool on_face = false;  // `point` is inside the triangle (its plane's foot), not on its boundary
 };
 
 // Closest point of the segment [a,b] to p (a point when a == b).
