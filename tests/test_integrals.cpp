@@ -154,6 +154,25 @@ TEST(DomainSplit, ChordAcrossASliver) {
     }
 }
 
+// Cut across a wedge w wide at its far end, (0,0), (1,0), (1,w), by x = 0.5: the piece beyond
+// the line has area 3 w / 8. Down to w = 1e-10 (a chord 5e-11 long) the face is cut; a chord
+// shorter than kTinyChord (1e-11, domain_split.cpp) is not inserted (one 1.4e-12 long pinched a
+// face into one loop through its ends twice: independent pair 10402), so the thinner wedge stays
+// whole, on one side.
+TEST(DomainSplit, ChordAcrossAThinWedge) {
+    for (double w : {1e-7, 1e-9, 1e-10, 1e-11, 1e-13}) {
+        DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{1, w}});
+        const auto pieces = m.split_face(1, Quadratic2{0, 0, 0, 0.5, 0, -0.5});  // x - 0.5
+        EXPECT_EQ(m.validate(), "") << w;
+        if (0.5 * w <= 1e-11) {
+            ASSERT_EQ(pieces.size(), 1u) << w;
+            continue;
+        }
+        ASSERT_EQ(pieces.size(), 2u) << w;
+        for (auto piece : pieces) EXPECT_NEAR(m.face_area(piece.face), (piece.sign > 0 ? 3 : 1) * w / 8, 1e-6 * w) << w;
+    }
+}
+
 // A line pair whose centre lies just outside a corner cut off by an edge 4e-7 long (top, at y =
 // 1 - 4e-7): g = (x - 0.5)(0.5 (x - 0.5) - (y - ym)), the centre (0.5, ym) 1.5e-7 above the
 // edge's middle. The line x = 0.5 enters the face at (0.5, 0) and leaves through the short edge;
