@@ -26,14 +26,14 @@ NearestFeature nearest_on_edges(const Vec3& p, const Vec3& a, const Vec3& b, con
 }
 }  // namespace
 
-// Inside the face, the distance of closest_point_on_triangle (the plane spanned by the longest
+// Inside the face, the distance of closest_point_inside (the plane spanned by the longest
 // edge and its re-orthogonalised height). Not Ericson's region test (5.1.5): its barycentric
 // numerators are differences of products, and on a sliver (height 5e-6 of its length) its face
 // distance was 3e-9 relative off, so a neighbour's shared edge 5e-12 farther looked nearer
 // (independent pair 9225, "fan"). Outside the face the nearest point is on an edge.
 NearestFeature nearest_feature(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-    const ClosestPoint cp = closest_point_on_triangle(p, a, b, c);
-    if (cp.on_face) return {cp.dist2, Region::abc};
+    ClosestPoint cp;
+    if (closest_point_inside(p, a, b, c, cp)) return {cp.dist2, Region::abc};
     return nearest_on_edges(p, a, b, c);
 }
 

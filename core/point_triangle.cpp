@@ -27,29 +27,53 @@ static ClosestPoint min_over_edges(const Vec3& p, const Vec3& a, const Vec3& b, 
 // |edge|^2 |p-a|^2, so on a sliver (height h << edge L) the face coordinates lose a factor (L/h)^2 of
 // precision. Here the plane is spanned by the longest edge e and the re-orthogonalised height vector g,
 // which keeps every error at about eps * (L + |p-a|) absolute, whatever the shape.
-ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a0, const Vec3& b0, const Vec3& c0) {
+namespace {
+enum class Foot { Inside, Outside, NoHeight };
+// Where p's foot on the triangle's plane falls. Inside: `out` is the foot and its distance.
+// NoHeight (height <= 1e-12 of the longest edge, or one point): `r` holds the corners relabelled
+// so that r[0] -> r[1] is the longest edge.
+Foot face_foot(const Vec3& p, const Vec3& a0, const Vec3& b0, const Vec3& c0, ClosestPoint& out, const Vec3* r[3]) {
     // Relabel so that a->b is the longest edge and c the opposite corner.
     double lab = norm2(b0 - a0), lbc = norm2(c0 - b0), lca = norm2(a0 - c0);
     const Vec3 *a = &a0, *b = &b0, *c = &c0;
     if (lbc >= lab && lbc >= lca) { a = &b0; b = &c0; c = &a0; }
     else if (lca >= lab && lca >= lbc) { a = &c0; b = &a0; c = &b0; }
+    r[0] = a, r[1] = b, r[2] = c;
     Vec3 e = *b - *a;
     double L2 = norm2(e);
-    if (L2 == 0) return {*a, norm2(p - *a)};  // all three corners coincide
+    if (L2 == 0) return Foot::NoHeight;  // all three corners coincide
     Vec3 f = *c - *a;
     Vec3 g = f - e * (dot(f, e) / L2);
     g -= e * (dot(g, e) / L2);  // second Gram-Schmidt pass: "twice is enough" for orthogonality
     double H2 = norm2(g);
-    if (H2 <= 1e-24 * L2) return min_over_edges(p, *a, *b, *c);  // |e x f|^2 = L2*H2 <= 1e-24 L^4
+    if (H2 <= 1e-24 * L2) return Foot::NoHeight;  // |e x f|^2 = L2*H2 <= 1e-24 L^4
 
     Vec3 ue = e / std::sqrt(L2), ug = g / std::sqrt(H2), n = cross(ue, ug);
     Vec3 w = p - *a;
     double x = dot(w, ue), y = dot(w, ug);               // p's in-plane coordinates
     double bx = std::sqrt(L2), cx = dot(f, ue), cy = dot(f, ug);  // a = (0,0), b = (bx,0), c = (cx,cy), cy > 0
     bool inside = y >= 0 && (cx - bx) * (y) - (cy) * (x - bx) >= 0 && (-cx) * (y - cy) - (-cy) * (x - cx) >= 0;
-    if (!inside) return min_over_edges(p, a0, b0, c0);  // the closest point is then on the boundary
+    if (!inside) return Foot::Outside;
     double z = dot(w, n);
-    return {*a + ue * x + ug * y, z * z, true};
+    out = {*a + ue * x + ug * y, z * z};
+    return Foot::Inside;
+}
+}  // namespace
+
+ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a0, const Vec3& b0, const Vec3& c0) {
+    ClosestPoint out{};
+    const Vec3* r[3];
+    switch (face_foot(p, a0, b0, c0, out, r)) {
+        case Foot::Inside: return out;
+        case Foot::NoHeight: return min_over_edges(p, *r[0], *r[1], *r[2]);  // (one point: its distance)
+        case Foot::Outside: break;
+    }
+    return min_over_edges(p, a0, b0, c0);  // the closest point is then on the boundary
+}
+
+bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, ClosestPoint& out) {
+    const Vec3* r[3];
+    return face_foot(p, a, b, c, out, r) == Foot::Inside;
 }
 
 }  // namespace hlens

@@ -7,7 +7,6 @@ namespace hlens {
 struct ClosestPoint {
     Vec3 point;    // closest point of the triangle (or segment) to the query
     double dist2;  // squared distance from the query to `point`
-    bool on_face = false;  // `point` is inside the triangle (its plane's foot), not on its boundary
 };
 
 // Closest point of the segment [a,b] to p (a point when a == b).
@@ -17,5 +16,8 @@ ClosestPoint closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& 
 // edge (|cross|^2 <= 1e-24 * longest^4) is treated as the union of its three edges: the answer is then
 // off by at most that height, and collinear or coincident corners are handled exactly.
 ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+// The same where p's foot on the plane lies inside the face (true, `out` set); false where the
+// closest point is on the boundary or the triangle has no height (the caller then takes the edges).
+bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, ClosestPoint& out);
 
 }  // namespace hlens

@@ -107,22 +107,16 @@ TEST(LabelCheck, NearestFeatureOfZeroAreaTriangles) {
 // barycentric test gave a sliver of height 5e-6 of its length a face distance 3e-9 relative too
 // far, so a neighbour's shared edge, truly 5e-12 farther, looked nearer). Hand value: a sliver in
 // the plane z = 0 (base 2.2 long along x, apex H above it) and p at height h above an inside
-// point, d^2 = h^2, all rotated and moved by a generic rigid motion (its rounding, ~1e-16 of the
-// coordinates, moves d^2 by ~1e-14 relative). Ericson's test is 6e-9 .. 6e-7 off at H = 1e-6.
+// point, d^2 = h^2, all rotated and moved by a generic rigid motion (placed; its rounding, ~1e-16
+// of the coordinates, moves d^2 by ~1e-14 relative). Ericson's test is far off at H = 1e-6.
 TEST(LabelCheck, NearestFeatureOfASliverFace) {
-    double qw = 0.3, qx = -0.5, qy = 0.7, qz = 0.4;
-    const double n = std::sqrt(qw * qw + qx * qx + qy * qy + qz * qz);
-    qw /= n, qx /= n, qy /= n, qz /= n;
-    const double R[3][3] = {{1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw)},
-                            {2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw)},
-                            {2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)}};
-    auto move = [&](Vec3 v) {
-        return Vec3(R[0][0] * v.x + R[0][1] * v.y + R[0][2] * v.z + 0.3, R[1][0] * v.x + R[1][1] * v.y + R[1][2] * v.z - 0.7,
-                    R[2][0] * v.x + R[2][1] * v.y + R[2][2] * v.z + 0.2);
-    };
     for (double H : {1e-6, 7e-6})
         for (double h : {0.015, 0.003, 0.2}) {
-            const NearestFeature f = nearest_feature(move({0.1, 0.4 * H, h}), move({0, H, 0}), move({1.3, 0, 0}), move({-0.9, 0, 0}));
+            // The sliver's corners and p (an unused vertex) moved together.
+            const TriangleMesh m = placed(mesh_of({{0, H, 0}, {1.3, 0, 0}, {-0.9, 0, 0}, {0.1, 0.4 * H, h}}, {{0, 1, 2}}), 1.1,
+                                          1.0, Vec3{0.3, -0.7, 0.2});
+            const auto& v = m.positions;
+            const NearestFeature f = nearest_feature(v[3], v[0], v[1], v[2]);
             EXPECT_EQ(f.region, Region::abc);
             EXPECT_NEAR(f.d2, h * h, 1e-12 * h * h) << "H = " << H << ", h = " << h;
         }
