@@ -282,6 +282,8 @@ private:
     // Without a listener (domain_reach.cpp): the regions that may be nearer on F, and the tests.
     void insert_where_nearer(int F, const SourceProjection& src, const RegionBoxes& boxes);
     bool region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox);
+    void claim_cracks(const SourceProjection& src, unsigned may_win);
+    static constexpr double kCrack = 10 * kCluster;  // a piece this small left in no region is a crack
     bool arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g, const Box2& b) const;
     bool lines_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g) const;
 

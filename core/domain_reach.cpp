@@ -94,6 +94,47 @@ void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const R
         else cut_by_region(reg, nullptr);
         for (int P : inside) apply_region(P, src, reg, nullptr);
     }
+    if (passed_over && may_win) claim_cracks(src, may_win);
+}
+
+// The pieces of F left in no region after the cuts (tmp_.pending) are those of the regions passed
+// over, and the cracks between regions: where three or more region lines cross within kCluster of
+// each other, a region's part of the face may be a piece that small, and the cut that should take
+// it in drops its chord as hugging the boundary (domain_split.cpp) and gives it the face's side.
+// Each later region, whose lines are the same lines, leaves it outside too, and the piece keeps
+// the old domain where the source is far nearer (independent pair "parallel_offset" 19917: a
+// triangle 1e-7 across at the projection of a source's corner on T''s edge kept d^2 = 0.057 where
+// the source gives 3e-15). The paper's insertion gives what is left to the last region; here a
+// piece no larger than kCrack goes to the region that holds its interior point, if that region
+// may be nearer on F: a piece that small is no region's part of any face but by rounding.
+void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
+    std::vector<int>& cracks = tmp_.inside;  // free again: the region loop is done with it
+    cracks.clear();
+    for (int P : tmp_.pending) {
+        const Box2 b = cached_face_box(P);
+        if (std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y) <= kCrack) cracks.push_back(P);
+    }
+    for (int P : cracks) {
+        Vec2 x;
+        if (!interior_point(P, x)) continue;
+        size_t best = 0;
+        double best_margin = -HUGE_VAL;  // the region x is deepest in (the regions tile the plane)
+        for (size_t k = 0; k < src.regions.size(); ++k) {
+            double m = HUGE_VAL;
+            for (const HalfPlane& hp : src.regions[k].planes)
+                if (hp.kind == HalfPlane::None) m = -HUGE_VAL;
+                else if (hp.kind == HalfPlane::Line) m = std::min(m, dot(hp.n, x) - hp.offset);
+            if (m > best_margin) best_margin = m, best = k;
+        }
+        if (!(may_win & (1u << best))) continue;
+        bool inside = true;  // every corner of the piece in the region, up to kCluster
+        for_each_half_edge(P, [&](int h) {
+            const Vec2 p = vertices_[half_[h].origin].p;
+            for (const HalfPlane& hp : src.regions[best].planes)
+                if (hp.kind == HalfPlane::Line && dot(hp.n, p) - hp.offset < -kCluster) inside = false;
+        });
+        if (inside) apply_region(P, src, src.regions[best], nullptr);
+    }
 }
 
 // True if region R of the source is nowhere nearer than face F's domain on F ∩ R: g = q_F - q_R
