@@ -597,16 +597,27 @@ std::string TargetSolver::validate(bool thorough) const {
         std::vector<Vec2> probes = probe_points(*mesh_, (int)f);
         if (!thorough && probes.size() > 1) probes.resize(1);
         for (Vec2 p : probes) {
+            // The domain mesh resolves d^2 to kVertexTolerance (1e-7 of T'): a boundary sits up to
+            // that far from its curve, and a sliver narrower than that along a boundary, or a piece
+            // that size where several boundaries cross, stays with a neighbour (domain_split.cpp,
+            // boundary_hugs_chord; README "Tolerances and degenerate input"). A probe within twice
+            // that of the domain's boundary is held to what that allows: the neighbour's quadratic
+            // equals d^2 on the true boundary, so they differ by at most the two gradients (the
+            // polynomial's, and d^2's, at most 2 d) times the distance; and it may lie that much
+            // farther outside its region. Every other probe is held to 1e-7 relative.
+            const bool rim = mesh_->near_boundary((int)f, p, 2 * DomainMesh::kVertexTolerance);
             // 2. The polynomial is d^2 there, computed directly.
             const double poly = F[f].poly(p), direct = direct_d2(p);
-            if (std::fabs(poly - direct) > 1e-7 * direct + 16 * noise)
+            const double resolution =
+                rim ? (norm(F[f].poly.gradient(p)) + 2 * std::sqrt(std::max(0.0, direct))) * 2 * DomainMesh::kVertexTolerance : 0.0;
+            if (std::fabs(poly - direct) > 1e-7 * direct + 16 * noise + resolution)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): polynomial %.12g but d^2 = %.12g at (%.9g, %.9g)", f,
                                      L.source, region_name(L.region), poly, direct, p.x, p.y), buf;
             // 3. The point lies in the region of the label's feature or of one tied with it, up to
             // how far the domain's boundary may sit from the region's line (twice the vertex
             // tolerance: on a domain 1e-7 wide at a cluster of boundaries every point is that near).
             bool inside = false;
-            for (const SourceRegion* r : tied) inside = inside || in_region(*r, p, 2 * DomainMesh::kVertexTolerance);
+            for (const SourceRegion* r : tied) inside = inside || in_region(*r, p, (rim ? 4 : 2) * DomainMesh::kVertexTolerance);
             if (thorough && !inside)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
                                      L.source, region_name(L.region), p.x, p.y), buf;

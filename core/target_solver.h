@@ -123,9 +123,11 @@ public:
     const std::vector<std::pair<size_t, uint8_t>>& voxel_states() const { return voxel_log_; }
     // The domain mesh's invariants, then per domain (issue 8): its label names a feature of an
     // inserted source whose quadratic is the domain's polynomial (up to the tie rule); at several
-    // interior points the polynomial equals d^2 computed directly, and the point lies in the
-    // label's region or in that of a feature tied with it (up to twice
-    // DomainMesh::kVertexTolerance). Empty if all hold, else the first failure.
+    // interior points the polynomial equals d^2 computed directly (to 1e-7 relative), and the point
+    // lies in the label's region or in that of a feature tied with it (up to twice
+    // DomainMesh::kVertexTolerance). A point within twice that of the domain's boundary, below the
+    // domain mesh's resolution, is held to the gradients times that distance, and to four times
+    // it for the region. Empty if all hold, else the first failure.
     std::string validate(bool thorough = true) const;
 
     // The exact squared distance from a point of T' (frame coordinates) to the inserted sources.
