@@ -12,7 +12,10 @@
 // same polynomial up to rounding (same_quadratic with the mesh's delta(): coplanar sources, an edge shared by two sources, a corner
 // shared by several). Over the union of their regions the domain mesh keeps one domain labelled by
 // the feature inserted first, so a sample there whose nearest feature is another one of the tie is
-// counted as a tie, not a disagreement. Any other difference is a disagreement.
+// counted as a tie, not a disagreement. So is a sample where the labelled feature itself is as
+// near as the nearest one to 1e-9 relative (a difference the quadratics may not resolve: a source
+// standing 5e-7 rad off the vertical on an edge in T''s plane has its face 2.6e-13 relative nearer
+// than that edge). Any other difference is a disagreement.
 #pragma once
 #include <array>
 #include <cstdint>

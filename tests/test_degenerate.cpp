@@ -146,6 +146,36 @@ TEST(LabelCheck, TieClassesFollowChains) {
     EXPECT_EQ(cls[0 * 8 + (int)Region::ab], -1);  // no such region
 }
 
+// A source standing on an edge e in T''s plane, leaning theta off the vertical: on the side it
+// leans to, its face is nearer than e by a factor cos(theta), d^2 (1 - sin^2 theta). A domain mesh
+// labelled with e over all of T' (the edge's quadratic as the only region): with theta = 5e-7 the
+// face is 2.5e-13 relative nearer, which the quadratics cannot resolve (independent pair 23555:
+// such a label came out of a split whose g was noise), so the overlay counts those samples as ties;
+// with theta = 1e-3 (1e-6 relative) they are disagreements. On the other side e is nearest.
+TEST(LabelCheck, FeaturesEquallyNearToPrecisionAreTies) {
+    const std::array<Vec3, 3> target{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+    const TargetFrame fr = TargetFrame::make(target);
+    const Vec3 c{0.1, 0.6, 0}, a{0.6, 0.1, 0}, n = Vec3{1, 1, 0} / std::sqrt(2.0);  // e = ca; n: its side toward (1, 1)
+    for (double theta : {5e-7, 1e-3}) {
+        const Vec3 b = 0.5 * (a + c) + 0.5 * (std::cos(theta) * Vec3{0, 0, 1} + std::sin(theta) * n);
+        const std::array<Vec3, 3> src{a, b, c};
+        const SourceProjection full = project_source(fr, src, 0);
+        SourceProjection edge_only;  // e's quadratic over all of T', labelled e
+        edge_only.regions.push_back(SourceRegion{Region::ca, {}, *region_quadratic(full, Region::ca)});
+        const auto& o = fr.ccw_order;
+        DomainMesh mesh({fr.corners[o[0]], fr.corners[o[1]], fr.corners[o[2]]});
+        mesh.insert(edge_only);
+        const LabelCheck L = check_labels(mesh, fr, {src}, {0});
+        ASSERT_GT(L.samples, 1000) << theta;
+        if (theta < 1e-6) {
+            EXPECT_EQ(L.disagree, 0) << L.first;
+            EXPECT_GT(L.ties, L.samples / 10);  // the face's side, within e's extent
+        } else {
+            EXPECT_GT(L.disagree, L.samples / 10);
+        }
+    }
+}
+
 // Runs `check` on the first, middle and last target of A of every stress pair; it returns a
 // failure ("" if none). A pair fails at its first failing target, which fails the test unless the
 // seed is listed. Returns the seeds that failed.
