@@ -149,6 +149,22 @@ void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& 
 
 }
 
+// The nearest feature `nf` (source t, named as the region test names a triangle's features) as its
+// projection names it: a degenerate source is a segment (its two ends and the edge between them)
+// or a point, so the triangle's edge ca lying inside the segment bc is the segment's edge
+// (independent pair "fan" 24969: a zero-area blade's edge tied with a neighbour's, a disagreement
+// only by name). The region of the projection that holds p.
+int projection_feature(const std::vector<SourceProjection>& proj, int t, int nf, Vec2 p) {
+    if (!proj[t].degenerate) return nf;
+    for (const SourceRegion& reg : proj[t].regions) {
+        bool in = true;
+        for (const HalfPlane& hp : reg.planes)
+            in = in && hp.kind != HalfPlane::None && (hp.kind == HalfPlane::All || dot(hp.n, p) - hp.offset >= -1e-9);
+        if (in) return feature_index(t, reg.kind);
+    }
+    return nf;
+}
+
 // 2. Compare away from changes. A different label is a tie where the two features' quadratics
 // are one polynomial (or linked by a chain of such: tie_classes), or where the labelled feature
 // itself is as near as the nearest one (to 1e-9 relative): two features whose distances differ by
@@ -170,7 +186,7 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
             if (L.domain[i] == L.nearest[i]) continue;
             const int s = L.domain[i] / 8, t = L.nearest[i] / 8;
             const Region r = (Region)(L.domain[i] % 8), rn = (Region)(L.nearest[i] % 8);
-            bool tie = classes[L.domain[i]] >= 0 && classes[L.domain[i]] == classes[L.nearest[i]];
+            bool tie = classes[L.domain[i]] >= 0 && classes[L.domain[i]] == classes[projection_feature(proj, t, L.nearest[i], L.sample_point(x, y))];
             if (!tie) {
                 // A degenerate source's features carry other names in its projection (a segment's
                 // ends and its one edge) than in the region test: compare the labelled quadratic's

@@ -176,6 +176,35 @@ TEST(LabelCheck, FeaturesEquallyNearToPrecisionAreTies) {
     }
 }
 
+// A zero-area source, a segment with one corner inside it, and a triangle whose edge is a part of
+// the segment: one line, so their edges tie. A domain mesh labelled with the triangle's edge over
+// all of T': where a part of the segment is nearest, the region test names the zero-area source's
+// edge along that part, which its projection (a segment: its two ends and the edge between them)
+// does not have; the overlay takes the projection's feature there, and counts a tie (independent
+// pair "fan" 24969 was a disagreement by name only).
+TEST(LabelCheck, ZeroAreaSourceFeaturesAsItsProjectionNamesThem) {
+    const std::array<Vec3, 3> target{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}};
+    const TargetFrame fr = TargetFrame::make(target);
+    // The segment reaches past T' both ways (its ends are nowhere nearest); the triangle stands
+    // upright on its edge, so over T' that edge (or a corner of it) is its nearest feature.
+    const Vec3 a{0.35, 0.35, 0.1}, b{2, 2, 0.1}, c{-1, -1, 0.1};
+    // In the order b, a, c its whole extent is the edge "ca", the region test's edges "ab" and "bc"
+    // being parts of it: a sample nearest to the part from a to c is named "bc".
+    const std::array<Vec3, 3> segment{b, a, c}, tri{a, Vec3{0.6, 0.6, 0.1}, Vec3{0.475, 0.475, 0.6}};
+    const SourceProjection full = project_source(fr, tri, 1);
+    ASSERT_TRUE(project_source(fr, segment, 0).degenerate);
+    SourceProjection edge_only;  // the triangle's edge ab over all of T'
+    edge_only.source = 1;
+    edge_only.regions.push_back(SourceRegion{Region::ab, {}, *region_quadratic(full, Region::ab)});
+    const auto& o = fr.ccw_order;
+    DomainMesh mesh({fr.corners[o[0]], fr.corners[o[1]], fr.corners[o[2]]});
+    mesh.insert(edge_only);
+    const LabelCheck L = check_labels(mesh, fr, {segment, tri}, {0, 1});
+    ASSERT_GT(L.samples, 1000);
+    EXPECT_EQ(L.disagree, 0) << L.first;
+    EXPECT_GT(L.ties, L.samples / 10);
+}
+
 // Runs `check` on the first, middle and last target of A of every stress pair; it returns a
 // failure ("" if none). A pair fails at its first failing target, which fails the test unless the
 // seed is listed. Returns the seeds that failed.

@@ -1,9 +1,9 @@
 // Independent QA generator + checker for Hausdorff Lens on random degenerate mesh pairs (issue 8).
 // Written by a second author who did not read tests/degenerate_pairs.h: its own kinds, its own
 // long-double brute force (distances, branch-and-bound bounds of the one-sided distance). CI runs
-// its first 1000 seeds (ctest independent_pairs) and eleven that once failed; every check passes on
-// seeds 0..23999 (README, "Tolerances and degenerate input"): run by hand for more seeds, e.g.
-// `build/bin/hlens_check_pairs 0 24000`. DUMP=prefix writes each pair as prefix_a.obj and prefix_b.obj.
+// its first 1000 seeds (ctest independent_pairs) and twelve that once failed; every check passes on
+// seeds 0..27999 (README, "Tolerances and degenerate input"): run by hand for more seeds, e.g.
+// `build/bin/hlens_check_pairs 0 28000`. DUMP=prefix writes each pair as prefix_a.obj and prefix_b.obj.
 // Usage: hlens_check_pairs SEED_FROM SEED_TO [KIND_FILTER] [--no-fork] [--verbose]
 //   kind of seed = kinds[seed % NKINDS]; the RNG is std::mt19937(seed).
 // Output: one line per failure: "FAIL seed=<s> kind=<k> check=<c> | <message>"
