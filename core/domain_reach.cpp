@@ -120,19 +120,12 @@ void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
         size_t best = 0;
         double best_margin = -HUGE_VAL;  // the region x is deepest in (the regions tile the plane)
         for (size_t k = 0; k < src.regions.size(); ++k) {
-            double m = HUGE_VAL;
-            for (const HalfPlane& hp : src.regions[k].planes)
-                if (hp.kind == HalfPlane::None) m = -HUGE_VAL;
-                else if (hp.kind == HalfPlane::Line) m = std::min(m, dot(hp.n, x) - hp.offset);
+            const double m = region_margin(src.regions[k], x);
             if (m > best_margin) best_margin = m, best = k;
         }
         if (!(may_win & (1u << best))) continue;
         bool inside = true;  // every corner of the piece in the region, up to kCluster
-        for_each_half_edge(P, [&](int h) {
-            const Vec2 p = vertices_[half_[h].origin].p;
-            for (const HalfPlane& hp : src.regions[best].planes)
-                if (hp.kind == HalfPlane::Line && dot(hp.n, p) - hp.offset < -kCluster) inside = false;
-        });
+        for_each_half_edge(P, [&](int h) { inside = inside && in_region(src.regions[best], vertices_[half_[h].origin].p, kCluster); });
         if (inside) apply_region(P, src, src.regions[best], nullptr);
     }
 }
@@ -159,8 +152,7 @@ bool DomainMesh::region_nowhere_nearer(int F, const SourceRegion& reg, const Box
     const double det = g.a * g.c - g.b * g.b;
     if (g.a < 0 && det > 0) {  // strictly concave: its centre, if in the box
         const Vec2 x{(g.b * g.e - g.c * g.d) / det, (g.b * g.d - g.a * g.e) / det};
-        bool in_r = x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y;
-        for (const HalfPlane& hp : reg.planes) in_r = in_r && (hp.kind != HalfPlane::Line || dot(hp.n, x) >= hp.offset - kRegionSlack);
+        const bool in_r = x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y && in_region(reg, x, kRegionSlack);
         if (in_r && !(g(x) <= kNowhere)) return false;
     }
     return arcs_nowhere_nearer(reg, g, b) && lines_nowhere_nearer(reg, g);

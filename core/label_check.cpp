@@ -156,12 +156,8 @@ void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& 
 // only by name). The region of the projection that holds p.
 int projection_feature(const std::vector<SourceProjection>& proj, int t, int nf, Vec2 p) {
     if (!proj[t].degenerate) return nf;
-    for (const SourceRegion& reg : proj[t].regions) {
-        bool in = true;
-        for (const HalfPlane& hp : reg.planes)
-            in = in && hp.kind != HalfPlane::None && (hp.kind == HalfPlane::All || dot(hp.n, p) - hp.offset >= -1e-9);
-        if (in) return feature_index(t, reg.kind);
-    }
+    for (const SourceRegion& reg : proj[t].regions)
+        if (in_region(reg, p, 1e-9)) return feature_index(t, reg.kind);
     return nf;
 }
 

@@ -4,7 +4,9 @@
 // its corners, R_abc, R_ab, R_bc, R_ca, R_a, R_b, R_c; over each, d_T^2 is one quadratic. Every
 // region is an intersection of 3D half-spaces with the plane of T', i.e. of 2D half-planes.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -55,6 +57,21 @@ struct SourceRegion {
     std::vector<HalfPlane> planes;  // the region is their intersection (within the plane)
     Quadratic2 poly;                // d_T^2 over the region, in frame units
 };
+
+// How deep p lies in region r, in frame units (the lines' normals are unit): the least margin over
+// its lines; +inf where no line bounds it, -inf where a boundary plane parallel to T' leaves
+// nothing (the region is empty). The one membership test of the construction, validate() and
+// the overlay, each with its own tolerance.
+inline double region_margin(const SourceRegion& r, Vec2 p) {
+    double m = HUGE_VAL;
+    for (const HalfPlane& h : r.planes) {
+        if (h.kind == HalfPlane::None) return -HUGE_VAL;
+        if (h.kind == HalfPlane::Line) m = std::min(m, dot(h.n, p) - h.offset);
+    }
+    return m;
+}
+// Whether p lies in region r to within `tol` (frame units).
+inline bool in_region(const SourceRegion& r, Vec2 p, double tol) { return region_margin(r, p) >= -tol; }
 
 // The regions of one source triangle, in the order they are inserted (vertex, edge, then face
 // regions, so the face region is what remains). A degenerate source (a segment or a point) has

@@ -548,16 +548,6 @@ static std::vector<Vec2> probe_points(const DomainMesh& m, int f) {
     return out;
 }
 
-// Whether p lies in region r of the projected source (to within `tol`, in frame units).
-static bool in_region(const SourceRegion& r, Vec2 p, double tol) {
-    for (const HalfPlane& h : r.planes) {
-        if (h.kind == HalfPlane::All) continue;
-        if (h.kind == HalfPlane::None) return false;
-        if (dot(h.n, p) - h.offset < -tol * norm(h.n)) return false;
-    }
-    return true;
-}
-
 std::string TargetSolver::validate(bool thorough) const {
     if (!mesh_) return "";
     std::string msg = mesh_->validate();

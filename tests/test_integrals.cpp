@@ -657,9 +657,10 @@ void expect_level_areas_match_the_split(const VoxelGrid& grid, int side, uint32_
     // At the ends of the range, no split is needed to know the answer: d > 0 but on the curves where
     // T' crosses B (surfaces that cross), and d > max nowhere (but for rounding).
     // (Just above 0: the strip where d < t around such a curve, 1e-12 of T' wide, is less than its rounding.)
-    if (crossing)
+    if (crossing) {
         for (double t2 : {0.0, 1e-24, 1e-20})
             EXPECT_NEAR(area_above_levels(*m, {t2})[0], area, 1e-9 * area) << what << " target " << t << " t^2 " << t2;
+    }
     EXPECT_LE(area_above_levels(*m, {max2})[0], 1e-9 * area) << what << " target " << t;
     // Where d^2 varies over T' by less than 1e-6 of itself (near-coincident and parallel sources),
     // the split's snapping cannot resolve the levels; the level area still follows the polynomial.
@@ -669,7 +670,9 @@ void expect_level_areas_match_the_split(const VoxelGrid& grid, int side, uint32_
     const std::vector<double> got = area_above_levels(*m, levels);
     for (size_t k = 0; k < levels.size(); ++k) {
         EXPECT_NEAR(got[k], split_area_above(*m, levels[k]), 1e-6 * area) << what << " target " << t << " level " << k;
-        if (k > 0) EXPECT_LE(got[k], got[k - 1] + 1e-12 * area) << what << " target " << t;  // A(t) never grows
+        if (k > 0) {
+            EXPECT_LE(got[k], got[k - 1] + 1e-12 * area) << what << " target " << t;  // A(t) never grows
+        }
     }
 }
 
@@ -712,7 +715,9 @@ void expect_compact_is_the_same_mesh(const VoxelGrid& grid, int side, uint32_t t
         const DomainMesh::Face &a = m->faces()[live[k]], &b = c.faces()[k + 1];
         EXPECT_TRUE(a.label == b.label && a.infinite == b.infinite) << what;
         EXPECT_EQ(a.poly.to_string(), b.poly.to_string()) << what;
-        if (!a.infinite) EXPECT_EQ(face_area_exact(*m, live[k]).value, face_area_exact(c, (int)k + 1).value) << what;
+        if (!a.infinite) {
+            EXPECT_EQ(face_area_exact(*m, live[k]).value, face_area_exact(c, (int)k + 1).value) << what;
+        }
     }
     const double max2 = ts.max_sq() / (ts.frame().scale * ts.frame().scale);
     const std::vector<double> levels{0.25 * max2, 0.5 * max2, 0.9 * max2};

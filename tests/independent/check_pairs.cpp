@@ -5,6 +5,8 @@
 // seeds 0..27999 (README, "Tolerances and degenerate input"): run by hand for more seeds, e.g.
 // `build/bin/hlens_check_pairs 0 28000`. DUMP=prefix writes each pair as prefix_a.obj and prefix_b.obj.
 // Usage: hlens_check_pairs SEED_FROM SEED_TO [KIND_FILTER] [--no-fork] [--verbose]
+//        hlens_check_pairs --pairs DIR [...]: every DIR/NAME_a.obj, DIR/NAME_b.obj (another
+//        generator's pairs, e.g. generate_pairs.py), numbered in name order as "seed"
 //   kind of seed = kinds[seed % NKINDS]; the RNG is std::mt19937(seed).
 // Output: one line per failure: "FAIL seed=<s> kind=<k> check=<c> | <message>"
 //         one line per seed:    "SEED <s> <k> nA=.. nB=.. ok|fail time=.."
@@ -15,6 +17,7 @@
 #include <hlens/target_solver.h>
 #include <hlens/voxel_grid.h>
 
+#include <dirent.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -698,9 +701,8 @@ static double max_coord(const Pair& P) {
     return c;
 }
 
-static void run_seed(unsigned seed, bool verbose, long budget) {
+static void run_pair(unsigned seed, const Pair& P, bool verbose, long budget) {
     auto t0 = std::chrono::steady_clock::now();
-    Pair P = generate(seed);
     Ctx C{seed, P.kind, 0, verbose};
     Box3 box = P.A.bounds(); box.add(P.B.bounds());
     const double diag = box.diagonal();
@@ -787,14 +789,46 @@ static void run_seed(unsigned seed, bool verbose, long budget) {
     std::fflush(stdout);
 }
 
+// A pair written by another generator: DIR/NAME_a.obj and DIR/NAME_b.obj; NAME ending in "_far"
+// marks a near-coincident pair far from the origin (check 6).
+static Pair load_pair(const std::string& dir, const std::string& name) {
+    Pair P;
+    P.kind = name;
+    P.note = dir + "/" + name;
+    P.A = load_mesh(dir + "/" + name + "_a.obj");
+    P.B = load_mesh(dir + "/" + name + "_b.obj");
+    P.near_coincident_far = name.size() >= 4 && name.compare(name.size() - 4, 4, "_far") == 0;
+    return P;
+}
+
+static std::vector<std::string> pair_names(const std::string& dir) {
+    std::vector<std::string> names;
+    DIR* d = opendir(dir.c_str());
+    if (!d) throw std::runtime_error(dir + ": cannot open the directory");
+    while (dirent* e = readdir(d)) {
+        const std::string f = e->d_name;
+        if (f.size() > 6 && f.compare(f.size() - 6, 6, "_a.obj") == 0) names.push_back(f.substr(0, f.size() - 6));
+    }
+    closedir(d);
+    std::sort(names.begin(), names.end(), [](const std::string& a, const std::string& b) {
+        return std::atol(a.c_str()) != std::atol(b.c_str()) ? std::atol(a.c_str()) < std::atol(b.c_str()) : a < b;
+    });
+    return names;
+}
+
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s SEED_FROM SEED_TO [KIND] [--no-fork] [--verbose] [--budget N] [--timeout S]\n kinds:", argv[0]);
+        std::fprintf(stderr, "usage: %s SEED_FROM SEED_TO [KIND] [--no-fork] [--verbose] [--budget N] [--timeout S]\n"
+                             "       %s --pairs DIR [--no-fork] [--verbose] [--budget N] [--timeout S]  (DIR/NAME_a.obj, DIR/NAME_b.obj)\n kinds:", argv[0], argv[0]);
         for (int i = 0; i < NKINDS; ++i) std::fprintf(stderr, " %s", kKinds[i]);
         std::fprintf(stderr, "\n");
         return 2;
     }
-    unsigned from = (unsigned)std::strtoul(argv[1], nullptr, 10), to = (unsigned)std::strtoul(argv[2], nullptr, 10);
+    const bool files = std::string(argv[1]) == "--pairs";
+    const std::string dir = files ? argv[2] : "";
+    const std::vector<std::string> names = files ? pair_names(dir) : std::vector<std::string>();
+    unsigned from = files ? 0 : (unsigned)std::strtoul(argv[1], nullptr, 10);
+    unsigned to = files ? (unsigned)names.size() : (unsigned)std::strtoul(argv[2], nullptr, 10);
     std::string filter;
     bool fork_each = true, verbose = false;
     long budget = 4000;
@@ -808,14 +842,21 @@ int main(int argc, char** argv) {
         else filter = a;
     }
     for (unsigned seed = from; seed < to; ++seed) {
-        std::string kind = kKinds[seed % NKINDS];
+        std::string kind = files ? names[seed] : kKinds[seed % NKINDS];
         if (!filter.empty() && filter != "all" && kind != filter) continue;
-        if (!fork_each) { run_seed(seed, verbose, budget); continue; }
+        auto run = [&] {
+            try {
+                run_pair(seed, files ? load_pair(dir, names[seed]) : generate(seed), verbose, budget);
+            } catch (const std::exception& e) {  // a pair that does not load
+                std::printf("FAIL seed=%u kind=%s check=load | %s\n", seed, kind.c_str(), e.what());
+            }
+        };
+        if (!fork_each) { run(); continue; }
         std::fflush(stdout);
         pid_t pid = fork();
         if (pid == 0) {
             alarm(timeout);
-            run_seed(seed, verbose, budget);
+            run();
             std::fflush(stdout);
             _exit(0);
         }
