@@ -168,11 +168,19 @@ int projection_feature(const std::vector<SourceProjection>& proj, int t, int nf,
 // 5e-7 rad off the vertical on an edge it shares, in T''s plane, with another; its face is nearer
 // than that edge by 2.6e-13 relative, 3.6e-17 where d^2 is 1.4e-4, below the rounding of the
 // quadratics (~1e-16): their difference is a square whose sign is noise over a band 0.02 wide
-// along the edge, and part of it kept the edge's label.)
+// along the edge, and part of it kept the edge's label.) A label stands for its tie class, so
+// "the labelled feature" is the nearest of its class: a sliver source whose three corners lie on
+// one line has three edges of one quadratic, and the domain named by one of them (merged, or the
+// first inserted) covers the others' regions (generate_pairs.py "sliver" 2930 and 3970: a domain
+// labelled edge bc 0.57 from bc, where edge ca of the same line is the nearest feature; the
+// region test named the sliver's face, whose plane is 7e-10 relative nearer, its foot far outside).
 void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vector<SourceProjection>& proj, double delta,
                     const std::vector<uint32_t>& ids, const LabelCheckOptions& opt, const std::vector<double>& best_d2,
                     LabelCheck& L) {
     const std::vector<int> classes = tie_classes(proj, delta);
+    std::vector<std::vector<int>> members(classes.size());  // each class's features, by its name
+    for (size_t f = 0; f < classes.size(); ++f)
+        if (classes[f] >= 0) members[classes[f]].push_back((int)f);
     for (int y = 0; y < L.height; ++y)
         for (int x = 0; x < L.width; ++x) {
             const int i = y * L.width + x;
@@ -188,7 +196,12 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
                 // ends and its one edge) than in the region test: compare the labelled quadratic's
                 // value with the nearest distance instead.
                 const Vec2 p = L.sample_point(x, y);
-                tie = feature_distance2(Vec3(p.x, p.y, 0), src[s][0], src[s][1], src[s][2], r) <= best_d2[i] * (1 + 1e-9) + 1e-300;
+                const Vec3 p3(p.x, p.y, 0);
+                double near = feature_distance2(p3, src[s][0], src[s][1], src[s][2], r);
+                if (classes[L.domain[i]] >= 0)
+                    for (int f : members[classes[L.domain[i]]])
+                        near = std::min(near, feature_distance2(p3, src[f / 8][0], src[f / 8][1], src[f / 8][2], (Region)(f % 8)));
+                tie = near <= best_d2[i] * (1 + 1e-9) + 1e-300;
                 const Quadratic2* q = proj[s].degenerate ? region_quadratic(proj[s], r) : nullptr;
                 tie = tie || (q && std::fabs((*q)(p) - best_d2[i]) <= 1e-9 * best_d2[i] + 64 * delta);
             }

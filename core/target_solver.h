@@ -82,8 +82,7 @@ public:
     TargetSolver& stop_below(double bound_sq);
     // Check the domain mesh's invariants after every insertion (slow; for tests).
     // `thorough`: validate() as below; otherwise only the invariants and one point per domain (the
-    // check of earlier versions, for the tests of configurations where the thorough one still
-    // finds a known fault: README, "Known weaknesses").
+    // check of earlier versions, cheaper).
     TargetSolver& validate_each_insertion(bool on = true, bool thorough = true);
     // Step in run()'s unwatched order (nearest source first) instead of the paper's: for checking
     // that order insertion by insertion. Before the first step.

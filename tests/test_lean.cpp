@@ -45,7 +45,7 @@ void compare_target(const VoxelGrid& grid, uint32_t t, const std::string& what, 
     try {
         paper.run();
     } catch (const std::logic_error& e) {
-        // A fault of the domain mesh itself (README, "Known weaknesses"), not of the lean
+        // A fault of the domain mesh itself (README, "Tolerances and degenerate input"), not of the lean
         // insertion: nothing to compare the lean one with.
         ++c.paper_faults;
         std::printf("[ info ] %s: the paper's insertion fails too: %s\n", what.c_str(), e.what());

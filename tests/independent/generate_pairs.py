@@ -1360,13 +1360,13 @@ def make_pair(seed):
     # unused vertices, sometimes
     extra = {'A': [], 'B': []}
     for F in ('A', 'B'):
-        if rng.random() < 0.15:
+        if rng.random() < 0.1:
             for _ in range(rng.randint(1, 4)):
                 c = P.V[rng.choice(used_all)]
                 far = rng.random() < 0.3
                 d = scl(rand_unit(rng), size * (logu(rng, 1, 4) if far else rng.uniform(0, 1)))
                 extra[F].append(P.v(add(c, d)))
-        elif rng.random() < 0.1:     # whole common list (other mesh's vertices unused)
+        elif rng.random() < 0.05:    # whole common list (other mesh's vertices unused)
             extra[F] = list(range(len(P.V)))
 
     meshes = {}
