@@ -443,9 +443,15 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // parallel lines, 1.4e-6 off, it lost the sliver where the edge was nearer, and with it the
     // maximum; "mirror" 250: a hyperbola whose parallel-line form had roots 6e-7 apart, where
     // the dropped terms, 1e-11, widen it to 7e-6 across T').
+    // And l2 is rounding noise wherever it is below ~1e-14: q's coefficients (scaled to at most 1)
+    // are exact to ~1e-16 whatever l1 is. Where the quadratic part itself is small (l1 1.5e-8 of
+    // the scale: two nearly parallel planes' quadratics), l2 = 1e-16 passed the relative test, and
+    // the "ellipse" it made had semi-axes 7e7 and 9e11, its points near T' 1.7e-4 off the curve
+    // (generate_pairs.py "perp" 5811: no chord found, a face kept a source 0.035 farther).
+    const bool l2_noise = !(std::fabs(l2) > 1e-14);
     const double disc = b1 * b1 - l1 * q.f;
-    bool central = std::fabs(l2) > eps_par * std::fabs(l1);
-    if (!central && std::fabs(l2) > 1e-14 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2))
+    bool central = !l2_noise && std::fabs(l2) > eps_par * std::fabs(l1);
+    if (!central && !l2_noise && std::fabs(l2) > 1e-14 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2))
         central = roots_moved(l1, disc, 4 * std::fabs(l2) + 4 * std::fabs(b2)) > 1e-9;
     // A centre 1e8 away or more (|b2 / l2|, l1 being ~1): central points near T' are differences of
     // terms that large, off by 1e-8 or more, where the parabola, which drops l2 Y^2, is off by

@@ -246,3 +246,33 @@ TEST(Conic, ComposeIsTheQuadraticAlongTheArc) {
         }
     }
 }
+
+// The difference of two nearly parallel vertical planes' quadratics (generate_pairs.py "perp"
+// 5811, these coefficients): a quadratic part 1.5e-8 of the linear part, whose smaller eigenvalue
+// (1e-16) is rounding noise. Taken as an ellipse (semi-axes 7e7 and 9e11), its points near T' were
+// 1.7e-4 off the curve and the split found no chord. The zero set must pass within 1e-9 of the
+// crossings of q = 0 with two segments across T', found by bisection on q itself in long double.
+TEST(Conic, NoiseEigenvalueOfASmallQuadraticPartMakesNoEllipse) {
+    Quadratic2 q;
+    q.a = -2.2120096270346488e-09; q.b = 5.3088229797980289e-09; q.c = -1.2741175526770654e-08;
+    q.d = -0.41666666666666646; q.e = 0.99999999999999989; q.f = 0.41666666666666646;
+    auto value = [&](long double x, long double y) {
+        return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
+    };
+    const ConicDecomposition d = decompose_conic(q);
+    ASSERT_FALSE(d.components.empty());
+    EXPECT_NE(d.type, ConicType::Ellipse);
+    for (auto [p0, p1] : {std::pair<Vec2, Vec2>{{0.5, 0.1}, {1, 0}}, {{0.2, 0.3}, {0.9, -0.2}}}) {
+        long double lo = 0, hi = 1;  // q(p0) > 0 > q(p1)
+        ASSERT_GT(value(p0.x, p0.y), 0);
+        ASSERT_LT(value(p1.x, p1.y), 0);
+        for (int it = 0; it < 80; ++it) {
+            const long double m = (lo + hi) / 2;
+            (value(p0.x + m * (p1.x - p0.x), p0.y + m * (p1.y - p0.y)) > 0 ? lo : hi) = m;
+        }
+        const Vec2 root{(double)(p0.x + lo * (p1.x - p0.x)), (double)(p0.y + lo * (p1.y - p0.y))};
+        double best = HUGE_VAL;
+        for (const CurveComponent& c : d.components) best = std::min(best, norm(c.at(c.param_of(root)) - root));
+        EXPECT_LT(best, 1e-9) << "root (" << root.x << ", " << root.y << ")";
+    }
+}

@@ -2,7 +2,7 @@
 // Written by a second author who did not read tests/degenerate_pairs.h: its own kinds, its own
 // long-double brute force (distances, branch-and-bound bounds of the one-sided distance). CI runs
 // its first 1000 seeds (ctest independent_pairs) and twelve that once failed; every check passes on
-// seeds 0..27999 (README, "Tolerances and degenerate input"): run by hand for more seeds, e.g.
+// seeds 0..39999 (README, "Tolerances and degenerate input"): run by hand for more seeds, e.g.
 // `build/bin/hlens_check_pairs 0 28000`. DUMP=prefix writes each pair as prefix_a.obj and prefix_b.obj.
 // Usage: hlens_check_pairs SEED_FROM SEED_TO [KIND_FILTER] [--no-fork] [--verbose]
 //        hlens_check_pairs --pairs DIR [...]: every DIR/NAME_a.obj, DIR/NAME_b.obj (another
