@@ -35,6 +35,7 @@
 #include "confirm_top.h"
 
 #include <algorithm>
+#include <cassert>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -147,16 +148,19 @@ bool cut(const Piece& Q, const Vec3& a, const Vec3& nrm, Piece& pos, Piece& neg)
 
 // The plane between triangles T and U of B that share an edge: through the edge, bisecting their
 // dihedral angle (for coplanar neighbours, the plane through the edge across their plane). T lies
-// on its positive side. False if they share no edge or fold onto each other.
+// on its positive side. False if they share no edge or fold onto each other. A corner repeated in
+// U matches its other copy, and an "edge" whose two ends are one corner of U is none: 3 - ui[0] -
+// ui[1] read U[3] (ASan, generate_pairs.py "zeroarea" 21: a zero-area triangle with a repeated corner).
 bool bisector(const Tri3& T, const Tri3& U, Vec3& a, Vec3& nrm) {
     int ti[2], ui[2], k = 0;
     for (int i = 0; i < 3 && k < 2; ++i)
         for (int j = 0; j < 3; ++j)
-            if (T[i].x == U[j].x && T[i].y == U[j].y && T[i].z == U[j].z) {
+            if ((k == 0 || j != ui[0]) && T[i].x == U[j].x && T[i].y == U[j].y && T[i].z == U[j].z) {
                 ti[k] = i, ui[k] = j, ++k;
                 break;
             }
     if (k < 2) return false;
+    assert(ti[0] != ti[1] && ui[0] != ui[1]);
     a = T[ti[0]];
     const Vec3 e = T[ti[1]] - a, p = T[3 - ti[0] - ti[1]] - a, q = U[3 - ui[0] - ui[1]] - a;
     const double ee = dot(e, e);
