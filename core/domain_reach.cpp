@@ -112,12 +112,7 @@ size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned 
     for_each_half_edge(P, [&](int h) { outside = outside || !in_region(src.regions[last], vertices_[half_[h].origin].p, kCluster); });
     Vec2 x;
     if (!outside || !interior_point(P, x) || in_region(src.regions[last], x, kCluster)) return last;
-    size_t best = last;
-    double best_margin = -HUGE_VAL;
-    for (size_t k = 0; k < src.regions.size(); ++k) {
-        const double m = region_margin(src.regions[k], x);
-        if (m > best_margin) best_margin = m, best = k;
-    }
+    const size_t best = deepest_region(src, x);
     return (may_win >> best) & 1u ? best : last;
 }
 
@@ -141,12 +136,7 @@ void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
     for (int P : cracks) {
         Vec2 x;
         if (!interior_point(P, x)) continue;
-        size_t best = 0;
-        double best_margin = -HUGE_VAL;  // the region x is deepest in (the regions tile the plane)
-        for (size_t k = 0; k < src.regions.size(); ++k) {
-            const double m = region_margin(src.regions[k], x);
-            if (m > best_margin) best_margin = m, best = k;
-        }
+        const size_t best = deepest_region(src, x);
         if (!(may_win & (1u << best))) continue;
         bool inside = true;  // every corner of the piece in the region, up to kCluster
         for_each_half_edge(P, [&](int h) { inside = inside && in_region(src.regions[best], vertices_[half_[h].origin].p, kCluster); });

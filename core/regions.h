@@ -85,6 +85,14 @@ struct SourceProjection {
     // differ by less than this can make are one polynomial (same_quadratic).
     double delta = 0;
 };
+// The region of `src` that p lies deepest in (the first of equals): the regions tile the plane.
+inline size_t deepest_region(const SourceProjection& src, Vec2 p) {
+    size_t best = 0;
+    double best_margin = -HUGE_VAL;
+    for (size_t k = 0; k < src.regions.size(); ++k)
+        if (const double m = region_margin(src.regions[k], p); m > best_margin) best_margin = m, best = k;
+    return best;
+}
 SourceProjection project_source(const TargetFrame& frame, const std::array<Vec3, 3>& source, uint32_t index);
 // The same into `out`, reusing its storage.
 void project_source(const TargetFrame& frame, const std::array<Vec3, 3>& source, uint32_t index, SourceProjection& out);
