@@ -649,10 +649,20 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             // on the boundary), unless the boundary between its ends strays from the curve: a
             // corner or a spike of the face beyond a short chord is a piece of its own (seeds 77,
             // 397, 547, 1147: kept whole, it kept the farther source up to 5e-6 beyond the curve).
+            // A line pair's centre, a vertex up to kOffCurve off either line (add_line_pair_centre),
+            // makes its chords no more precise than that: a boundary that close to one is the chord
+            // (independent "perp" 8499, 1e8 from the origin: a chord 1.7e-6 long from a vertex on
+            // a line to the centre 5e-7 off it, beside the boundary edge joining them, made a lens
+            // whose arcs' tangents crossed; the next chord to the centre went into the lens and
+            // became a bridge, the face left whole with the farther source, d^2 half off). Other
+            // ends keep kCluster: one up to kFlatTip off a flat g may end a real sliver's chord.
             const bool short_chord = !comp.closed() && norm(vertices_[c.va].p - vertices_[c.vb].p) <= kCluster;
+            double tol = kCluster;
+            for (int v : {c.va, c.vb})
+                if (v == s.centre) tol = std::max(tol, off_component(comp, vertices_[v].p));
             if (!point_in_face(f, mid)) continue;  // one outside is not ours
             if (flat_boundary_edge(s, c.va, c.vb)) continue;
-            if ((short_chord || near_boundary(f, mid, kCluster)) && (boundary_hugs_chord(f, c, kCluster) || !chord_inside(f, c)))
+            if ((short_chord || near_boundary(f, mid, tol)) && (boundary_hugs_chord(f, c, tol) || !chord_inside(f, c)))
                 continue;
         }
         if (!duplicate_chord(c)) tmp_.chords.push_back(c);
