@@ -88,7 +88,8 @@ void DomainMesh::clip_regions_to_target(const SourceProjection& src, RegionBoxes
 
 // Face F (alive when the insertion began) cut by the regions in turn: the pieces inside region k
 // take its quadratic where the source is nearer (apply_region), the rest go on to region k + 1.
-// The last region takes what is left (the regions tile the plane).
+// The last region takes what is left (the regions tile the plane), but for a piece wholly outside
+// it that a dropped chord left (leftover_region).
 void DomainMesh::insert_into_face(int F, const SourceProjection& src, const RegionBoxes& boxes, const Listener* L) {
     const size_t R = src.regions.size();
     std::vector<int>& pending = tmp_.pending;
@@ -106,7 +107,7 @@ void DomainMesh::insert_into_face(int F, const SourceProjection& src, const Regi
         } else {
             cut_by_region(reg, L);
         }
-        for (int P : inside) apply_region(P, src, reg, L);
+        for (int P : inside) apply_region(P, src, k + 1 == R ? src.regions[leftover_region(P, src, ~0u)] : reg, L);
     }
 }
 

@@ -101,17 +101,22 @@ void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const R
 // where their lines cross within kCluster of a point a cut may drop its chord and leave part of
 // another region outside it: a sliver 3e-9 wide and 6e-4 long of a source's corner region, between
 // two of its lines 4e-6 rad apart, went to the face region, 2e-6 from it (generate_pairs.py "perp"
-// 4531, the first insertion). A piece with a corner more than kCluster outside the last region and
-// its interior point too goes to the region deepest at that point, if that one may be nearer.
-// (Only here: in the paper's insertion, which the debugger shows, the last region takes what is
-// left, as the paper says; moving leftovers there made our stress seed 698, overlapping coplanar
-// sources, jump by 2.3e-8 relative across an edge, and 4531 passes that insertion without it.)
+// 4531, the first insertion), and in the paper's insertion a wedge 1e-7 wide and 0.024 long of a
+// corner region, 0.024 outside a face region whose edge line is T''s edge ("perp" 10291). A piece
+// with a corner more than kCluster outside the last region, none more than kCluster inside it and
+// its interior point outside goes to the region deepest at that point, if that one may be nearer.
+// A piece across the last region's line is a cut that failed, no region's: it stays with the last
+// (given to the region deepest at its interior point, such a piece of our stress seed 698,
+// overlapping coplanar sources, made d^2 jump by 2.3e-8 relative across an edge).
 size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned may_win) {
     const size_t last = src.regions.size() - 1;
-    bool outside = false;
-    for_each_half_edge(P, [&](int h) { outside = outside || !in_region(src.regions[last], vertices_[half_[h].origin].p, kCluster); });
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for_each_half_edge(P, [&](int h) {
+        const double m = region_margin(src.regions[last], vertices_[half_[h].origin].p);
+        lo = std::min(lo, m), hi = std::max(hi, m);
+    });
     Vec2 x;
-    if (!outside || !interior_point(P, x) || in_region(src.regions[last], x, kCluster)) return last;
+    if (!(lo < -kCluster) || hi > kCluster || !interior_point(P, x) || in_region(src.regions[last], x, kCluster)) return last;
     const size_t best = deepest_region(src, x);
     return (may_win >> best) & 1u ? best : last;
 }

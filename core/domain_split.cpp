@@ -593,6 +593,25 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
         const double r = norm(p - m);
         if (off_component(l1, p) <= kOffCurve && off_component(l2, p) <= kOffCurve && r <= best) best = r, s.centre = v;
     }
+    // A vertex of the face within kCluster of the centre is the centre, though |g| > kZero there:
+    // where the two lines cross g's gradient vanishes, so neither |g| <= kZero nor the gradient
+    // test of classify_by_side marks it, and g there is rounding of the difference of two nearly
+    // equal quadratics (independent pair "mirror" 8202: two nearly coplanar sources sharing an
+    // edge that pierces T' at a corner of the face, g 1.3e-14 there, the centre 8e-13 from the
+    // corner; one line's chord had no end at the corner and the wedge where the second source is
+    // nearer, 1.6e-6 in d^2, kept the first).
+    if (s.centre < 0) {
+        double nearest = kCluster;
+        for (int h : tmp_.hes) {
+            const int v = half_[h].origin;
+            const double r = norm(vertices_[v].p - m);
+            if (r <= nearest) nearest = r, s.centre = v;
+        }
+        if (s.centre >= 0) {
+            s.mark_zero(s.centre);
+            if (std::find(tmp_.zverts.begin(), tmp_.zverts.end(), s.centre) == tmp_.zverts.end()) tmp_.zverts.push_back(s.centre);
+        }
+    }
     if (s.centre < 0 && point_in_face(s.f, m)) {
         int vm = add_vertex(m);
         s.mark_zero(vm);
