@@ -267,7 +267,7 @@ private:
     bool flat_boundary_edge(const SplitCall& s, int u, int v) const;
     bool foot_in_face(int f, Vec2 q) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;
-    bool chord_inside(int f, const Chord& c) const;
+    bool chord_inside(const SplitCall& s, const Chord& c) const;
     void insert_chords(SplitCall& s);
     void rebuild_split_faces(SplitCall& s, std::vector<SplitPiece>& out);
     int side_of_piece(SplitCall& s, int face, const std::vector<int>& loop_hes) const;

@@ -128,15 +128,25 @@ size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned 
 // Each later region, whose lines are the same lines, leaves it outside too, and the piece keeps
 // the old domain where the source is far nearer (independent pair "parallel_offset" 19917: a
 // triangle 1e-7 across at the projection of a source's corner on T''s edge kept d^2 = 0.057 where
-// the source gives 3e-15). The paper's insertion gives what is left to the last region; here a
-// piece no larger than kCrack goes to the region that holds its interior point, if that region
-// may be nearer on F: a piece that small is no region's part of any face but by rounding.
+// the source gives 3e-15). The same holds for a sliver along one region line, as long as it likes
+// but no wider than kCluster ("sliver" 11746: 6.6e-6 by 1e-8 at a needle source's corner, left
+// with a domain 0.05 away, d^2 0.0026 beside 2e-11). The paper's insertion gives what is left to
+// the last region; here a piece no larger than kCrack, or one whose every corner lies within
+// kCluster of a region that may be nearer, goes to the region that holds its interior point, if
+// that region may be nearer on F and holds its corners: such a piece is no region's part of any
+// face but by rounding.
 void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
     std::vector<int>& cracks = tmp_.inside;  // free again: the region loop is done with it
     cracks.clear();
     for (int P : tmp_.pending) {
         const Box2 b = cached_face_box(P);
-        if (std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y) <= kCrack) cracks.push_back(P);
+        unsigned near = may_win;  // the regions within kCluster of every corner
+        if (!(std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y) <= kCrack))
+            for_each_half_edge(P, [&](int h) {
+                for (size_t k = 0; k < src.regions.size(); ++k)
+                    if ((near >> k & 1u) && !in_region(src.regions[k], vertices_[half_[h].origin].p, kCluster)) near &= ~(1u << k);
+            });
+        if (near) cracks.push_back(P);
     }
     for (int P : cracks) {
         Vec2 x;
