@@ -596,7 +596,7 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
     // A vertex of the face within kCluster of the centre is the centre, though |g| > kZero there:
     // where the two lines cross g's gradient vanishes, so neither |g| <= kZero nor the gradient
     // test of classify_by_side marks it, and g there is rounding of the difference of two nearly
-    // equal quadratics (independent pair "mirror" 8202: two nearly coplanar sources sharing an
+    // equal quadratics (generate_pairs.py "mirror" 8202: two nearly coplanar sources sharing an
     // edge that pierces T' at a corner of the face, g 1.3e-14 there, the centre 8e-13 from the
     // corner; one line's chord had no end at the corner and the wedge where the second source is
     // nearer, 1.6e-6 in d^2, kept the first).
@@ -670,11 +670,12 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             // 397, 547, 1147: kept whole, it kept the farther source up to 5e-6 beyond the curve).
             // A line pair's centre, a vertex up to kOffCurve off either line (add_line_pair_centre),
             // makes its chords no more precise than that: a boundary that close to one is the chord
-            // (independent "perp" 8499, 1e8 from the origin: a chord 1.7e-6 long from a vertex on
-            // a line to the centre 5e-7 off it, beside the boundary edge joining them, made a lens
-            // whose arcs' tangents crossed; the next chord to the centre went into the lens and
-            // became a bridge, the face left whole with the farther source, d^2 half off). Other
-            // ends keep kCluster: one up to kFlatTip off a flat g may end a real sliver's chord.
+            // (generate_pairs.py "perp" 8499, 1e8 from the origin: a chord 1.7e-6 long from a
+            // vertex on a line to the centre 5e-7 off it, beside the boundary edge joining them,
+            // made a lens whose arcs' tangents crossed; the next chord to the centre went into the
+            // lens and became a bridge, the face left whole with the farther source, d^2 half
+            // off). Other ends keep kCluster: one up to kFlatTip off a flat g may end a real
+            // sliver's chord.
             const bool short_chord = !comp.closed() && norm(vertices_[c.va].p - vertices_[c.vb].p) <= kCluster;
             double tol = kCluster;
             for (int v : {c.va, c.vb})
@@ -731,7 +732,7 @@ bool DomainMesh::on_component(const SplitCall& s, const CurveComponent& comp, in
 // precision of the chord's curve is no evidence of that: the curve (decomposed from g) passes its
 // own ends, vertices on g = 0 to rounding, at some distance, and g resolves it to no better than
 // kZero / |grad g| (where |g| <= kZero counts as on the curve). A point within the smaller of the
-// two of the boundary is in the face. (Independent pair "sliver" 4050: where two needles' edge
+// two of the boundary is in the face. (generate_pairs.py "sliver" 4050: where two needles' edge
 // quadratics differ, g is flat (|grad g| 4.5e-6, so 2.2e-9) and its line ran 5e-11 from the roots
 // found on the boundary, across a face 3e-11 wide: the chord's last points were 3.3e-12 outside,
 // it was dropped, and the whole face, 9e-6 long, went to the source nearer on 2/3 of it, d^2
