@@ -284,7 +284,7 @@ private:
     bool region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox);
     void claim_cracks(const SourceProjection& src, unsigned may_win);
     size_t leftover_region(int P, const SourceProjection& src, unsigned may_win);
-    static constexpr double kCrack = 10 * kCluster;  // a piece this small left in no region is a crack
+    unsigned regions_holding_corners(int P, const SourceProjection& src, unsigned mask) const;
     bool arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g, const Box2& b) const;
     bool lines_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g) const;
 

@@ -131,32 +131,29 @@ size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned 
 // the source gives 3e-15). The same holds for a sliver along one region line, as long as it likes
 // but no wider than kCluster ("sliver" 11746: 6.6e-6 by 1e-8 at a needle source's corner, left
 // with a domain 0.05 away, d^2 0.0026 beside 2e-11). The paper's insertion gives what is left to
-// the last region; here a piece no larger than kCrack, or one whose every corner lies within
-// kCluster of a region that may be nearer, goes to the region that holds its interior point, if
-// that region may be nearer on F and holds its corners: such a piece is no region's part of any
-// face but by rounding.
+// the last region; here a piece goes to the region that holds its interior point if that region
+// may be nearer on F and holds every corner of the piece, up to kCluster: such a piece is no
+// region's part of any face but by rounding.
 void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
     std::vector<int>& cracks = tmp_.inside;  // free again: the region loop is done with it
     cracks.clear();
-    for (int P : tmp_.pending) {
-        const Box2 b = cached_face_box(P);
-        unsigned near = may_win;  // the regions within kCluster of every corner
-        if (!(std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y) <= kCrack))
-            for_each_half_edge(P, [&](int h) {
-                for (size_t k = 0; k < src.regions.size(); ++k)
-                    if ((near >> k & 1u) && !in_region(src.regions[k], vertices_[half_[h].origin].p, kCluster)) near &= ~(1u << k);
-            });
-        if (near) cracks.push_back(P);
-    }
+    for (int P : tmp_.pending)  // most lie in regions passed over, whose corners no region may win holds
+        if (regions_holding_corners(P, src, may_win)) cracks.push_back(P);
     for (int P : cracks) {
         Vec2 x;
         if (!interior_point(P, x)) continue;
         const size_t best = deepest_region(src, x);
-        if (!(may_win & (1u << best))) continue;
-        bool inside = true;  // every corner of the piece in the region, up to kCluster
-        for_each_half_edge(P, [&](int h) { inside = inside && in_region(src.regions[best], vertices_[half_[h].origin].p, kCluster); });
-        if (inside) apply_region(P, src, src.regions[best], nullptr);
+        if (regions_holding_corners(P, src, may_win & (1u << best))) apply_region(P, src, src.regions[best], nullptr);
     }
+}
+
+// The regions of `mask` within kCluster of every corner of face P.
+unsigned DomainMesh::regions_holding_corners(int P, const SourceProjection& src, unsigned mask) const {
+    for_each_half_edge(P, [&](int h) {
+        for (size_t k = 0; k < src.regions.size(); ++k)
+            if ((mask >> k & 1u) && !in_region(src.regions[k], vertices_[half_[h].origin].p, kCluster)) mask &= ~(1u << k);
+    });
+    return mask;
 }
 
 // True if region R of the source is nowhere nearer than face F's domain on F ∩ R: g = q_F - q_R

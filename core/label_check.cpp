@@ -197,11 +197,11 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
                 // value with the nearest distance instead.
                 const Vec2 p = L.sample_point(x, y);
                 const Vec3 p3(p.x, p.y, 0);
-                const int c = classes[L.domain[i]];
-                const std::vector<int> self{L.domain[i]};
-                double near = HUGE_VAL;  // the label's feature, or the nearest of its tie class (it is one)
-                for (int f : c >= 0 ? members[c] : self)
-                    near = std::min(near, feature_distance2(p3, src[f / 8][0], src[f / 8][1], src[f / 8][2], (Region)(f % 8)));
+                double near = feature_distance2(p3, src[s][0], src[s][1], src[s][2], r);  // or the nearest of its tie class
+                if (const int c = classes[L.domain[i]]; c >= 0)
+                    for (int f : members[c])
+                        if (f != L.domain[i])
+                            near = std::min(near, feature_distance2(p3, src[f / 8][0], src[f / 8][1], src[f / 8][2], (Region)(f % 8)));
                 tie = near <= best_d2[i] * (1 + 1e-9) + 1e-300;
                 const Quadratic2* q = proj[s].degenerate ? region_quadratic(proj[s], r) : nullptr;
                 tie = tie || (q && std::fabs((*q)(p) - best_d2[i]) <= 1e-9 * best_d2[i] + 64 * delta);
