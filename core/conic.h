@@ -72,6 +72,12 @@ inline bool same_quadratic(const Quadratic2& p, const Quadratic2& q, double delt
     return d <= rel * s || d <= 2 * std::sqrt(s) * delta + delta * delta;
 }
 
+// A bound of |q| where |x|, |y| <= 1 (over T' in its frame): what two quadratics the tie rule
+// made one may differ by there.
+inline double unit_box_bound(const Quadratic2& q) {
+    return std::fabs(q.a) + 2 * std::fabs(q.b) + std::fabs(q.c) + 2 * std::fabs(q.d) + 2 * std::fabs(q.e) + std::fabs(q.f);
+}
+
 // The line n.x = offset as a linear quadratic (f >= 0 on the side n points to).
 Quadratic2 half_plane(Vec2 n, double offset);
 

@@ -147,7 +147,10 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
         give_to_region(P, src, reg, L);
         return;
     }
-    if (same_feature_quadratic(faces_[P].poly, faces_[P].label.region, reg.poly, reg.kind, delta_)) return;  // the existing domain keeps it (a tie)
+    if (same_feature_quadratic(faces_[P].poly, faces_[P].label.region, reg.poly, reg.kind, delta_)) {  // the existing domain keeps it (a tie)
+        note_tie(P, reg.poly);
+        return;
+    }
     Quadratic2 Q = faces_[P].poly - reg.poly;                // > 0 where the source is nearer
     std::vector<SplitPiece>& pieces = tmp_.pieces;
     split_face_into(P, Q, pieces);
@@ -163,6 +166,7 @@ void DomainMesh::give_to_region(int P, const SourceProjection& src, const Source
     faces_[P].poly = reg.poly;
     faces_[P].label = lab;
     faces_[P].infinite = false;
+    faces_[P].tie_slack = 0;
     ++relabels_;
     touch_face(P);
     if (L && L->on_relabel) L->on_relabel(P, old, lab);
@@ -266,6 +270,9 @@ bool DomainMesh::merge_equal_neighbours(const Listener* L, uint64_t since) {
                          (!fa.infinite && !fb.infinite && same_feature_quadratic(fa.poly, fa.label.region, fb.poly, fb.label.region, delta_));
             if (!equal) continue;
             int keep = std::min(F, G), gone = std::max(F, G);
+            if (gone != keep && !fa.infinite)  // the kept quadratic now meets the other's neighbours
+                faces_[keep].tie_slack = std::max(faces_[keep].tie_slack,
+                                                  faces_[gone].tie_slack + unit_box_bound(faces_[keep].poly - faces_[gone].poly));
             std::vector<int>& hes = tmp_.merge_hes;
             hes.clear();
             for_each_half_edge(F, [&](int h) { hes.push_back(h); });

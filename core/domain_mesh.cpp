@@ -601,10 +601,13 @@ std::string DomainMesh::validate(double area_tol) const {
         // feature's curvature, at most 1 in frame units for an edge or a corner region), and
         // their rounding. A missing piece of the envelope wider than that shows as a jump
         // (degenerate pair "mirror" 11642: an edge's sliver 3.5e-6 wide, and the maximum with it).
+        // Where the tie rule kept one of two quadratics within its allowance, d^2 may step by
+        // their difference (Face::tie_slack; generate_pairs.py "crossing" 11707: two face regions
+        // 3e-12 apart merged, a step of 2.6e-12 against the other's edge region).
         const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
         const double jump = std::fabs(qF(m) - qG(m));
         const double tol = kOffCurve * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + kOffCurve * kOffCurve +
-                           1e-13 * (qF.scale() + qG.scale());
+                           1e-13 * (qF.scale() + qG.scale()) + faces_[F].tie_slack + faces_[G].tie_slack;
         if (jump > tol)
             return std::snprintf(buf, sizeof buf, "faces %d and %d: d^2 jumps by %g across edge %zu (%g and %g)", F, G, jump, e,
                                  qF(m), qG(m)), buf;

@@ -81,6 +81,10 @@ public:
         std::vector<int> loops; // one half-edge per boundary loop: the outer loop first, then holes
         bool alive = true;
         double max_value = HUGE_VAL;  // max of poly over the face, from the last update_maxima()
+        // How far d^2 may step at this domain's edges because the tie rule kept its quadratic
+        // where another one, within the allowance, met it (a merge, or a region that tied): a
+        // bound of their difference over T'. validate() allows it; relabelling clears it.
+        double tie_slack = 0;
     };
     struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0; };
 
@@ -282,6 +286,11 @@ private:
     // Without a listener (domain_reach.cpp): the regions that may be nearer on F, and the tests.
     void insert_where_nearer(int F, const SourceProjection& src, const RegionBoxes& boxes);
     bool region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox);
+    // Face F keeps its quadratic where a region's `q` ties with it: its edges with that region's
+    // other pieces may step by their difference.
+    void note_tie(int F, const Quadratic2& q) {
+        faces_[F].tie_slack = std::max(faces_[F].tie_slack, unit_box_bound(faces_[F].poly - q));
+    }
     void claim_cracks(const SourceProjection& src, unsigned may_win);
     size_t leftover_region(int P, const SourceProjection& src, unsigned may_win);
     unsigned regions_holding_corners(int P, const SourceProjection& src, unsigned mask) const;

@@ -165,7 +165,10 @@ unsigned DomainMesh::regions_holding_corners(int P, const SourceProjection& src,
 bool DomainMesh::region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox) {
     const Face& face = faces_[F];
     if (face.infinite) return false;
-    if (same_feature_quadratic(face.poly, face.label.region, reg.poly, reg.kind, delta_)) return true;  // a tie: the domain keeps it
+    if (same_feature_quadratic(face.poly, face.label.region, reg.poly, reg.kind, delta_)) {  // a tie: the domain keeps it
+        note_tie(F, reg.poly);
+        return true;
+    }
     Quadratic2 g = face.poly - reg.poly;
     const double gs = g.scale();
     if (!(gs > 0)) return false;
