@@ -65,8 +65,8 @@ inline bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel
 // absolutely 2 sqrt(s) delta + delta^2 for coefficients of size s (a squared distance h^2 whose h
 // is off by delta is off by that). Coplanar sources' quadratics at height ~0 differ by noise far
 // below 1e-11 of themselves; distinct ones (heights differing by more than delta) never tie.
-// Between a face's quadratic and an edge's or a corner's the relative allowance is 1e-13
-// (same_feature_quadratic in regions.h).
+// Between features of different dimension (a face's quadratic and an edge's or a corner's, an
+// edge's and a corner's) the relative allowance is 1e-13 (same_feature_quadratic in regions.h).
 inline bool same_quadratic(const Quadratic2& p, const Quadratic2& q, double delta, double rel = 1e-11) {
     const double s = std::max(p.scale(), q.scale()), d = (p - q).scale();
     return d <= rel * s || d <= 2 * std::sqrt(s) * delta + delta * delta;

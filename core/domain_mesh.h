@@ -260,6 +260,7 @@ private:
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
     bool split_arc_on_the_curve(SplitCall& s, int e);
     bool snap_to_end(SplitCall& s, int e, Vec2 p, double tol);
+    bool pinches_face(const SplitCall& s, int e, Vec2 p, double along_a) const;
     bool past_end(int e, Vec2 p) const;
     bool duplicate_chord(const Chord& c) const;
     void classify_by_side(SplitCall& s);

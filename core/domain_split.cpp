@@ -108,6 +108,10 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
             }
             double ao = std::atan2(dout.y, dout.x), ab = std::atan2(dback.y, dback.x);
             double rd = wrap2pi(ad - ao), rb = wrap2pi(ab - ao);
+            // Out and back along one direction: the whole turn at the tip of a dangling arc, but
+            // between two arcs a tangential tie that only the secants (pass 1) can order (a chord
+            // ending where it touches the boundary: pinches_face).
+            if (pass == 0 && hout != (hin ^ 1) && (rb <= 1e-12 || rb >= kTwoPi - 1e-12)) continue;
             if (rb == 0) rb = kTwoPi;
             if (rd > 1e-12 && rd < rb - 1e-12) return hin;
         }
@@ -426,18 +430,50 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
 // Where the centre of a line pair g = 0 lies on a straight arc (g along the arc has a double root
 // there, and g's gradient vanishes), the lines' pieces inside the face end there although g keeps
 // its sign along the arc: the point becomes a vertex on the curve. (A conic merely tangent to the
-// arc ends nowhere there.) (Degenerate seed 545: two sources' edge lines meeting on a domain's
-// boundary, the line pair's centre 1e-9 outside the face, and the whole face given to the farther
-// source.) True if it did (then the arc has no sign change to look for).
+// arc ends nowhere there, unless it pinches the face: pinches_face.) (Degenerate seed 545: two
+// sources' edge lines meeting on a domain's boundary, the line pair's centre 1e-9 outside the
+// face, and the whole face given to the farther source.) The centre, not a thin conic flat along
+// its length: where g's extremum along the arc lies across 0, its two roots farther apart than
+// kCluster, and the point farther than kOffCurve from g's centre (where its gradient vanishes), g
+// changes sign at both roots, and they are looked for as any crossings are. (Independent pair
+// "zeroarea" 12389, diagnosed and fixed by a helper: a thin ellipse 2.8e-6 wide and 0.0127 long,
+// the difference of a nearly coplanar source's face quadratic and a zero-area source's edge
+// quadratic, so flat along its length that |g| < kZero and |grad g| < 1e-8 near its tip, crossed
+// T''s edge at two points 1.5e-6 apart, 0.0063 from its centre; taken as one touching point,
+// 1.45e-5 from the ellipse as its feet have it, that ended no chord, and the sliver between the
+// ellipse and a region line, 1e-6 wide, kept the farther source: d^2 2e-12 where the truth is 0.)
+// True if it did (then the arc has no sign change to look for).
 bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along) {
     const double A = along.c[2], B = along.c[1], C = along.c[0];  // along a straight arc, degree 2
     if (A == 0 || along.c[3] != 0 || along.c[4] != 0) return false;
-    const double z = -B / (2 * A);
-    if (!(z > edges_[e].z0 && z < edges_[e].z1) || !(std::fabs(C - B * B / (4 * A)) <= kZero)) return false;
+    const double z = -B / (2 * A), extremum = C - B * B / (4 * A);
+    if (!(z > edges_[e].z0 && z < edges_[e].z1) || !(std::fabs(extremum) <= kZero)) return false;
     const Vec2 p = edges_[e].curve(z);
-    if (!(norm(s.g.gradient(p)) <= 1e-6)) return false;  // a tangent conic: nothing ends there
+    if (!(norm(s.g.gradient(p)) <= 1e-6) && !pinches_face(s, e, p, A)) return false;  // a tangent conic: nothing ends there
+    if ((extremum > 0 && A < 0) || (extremum < 0 && A > 0)) {
+        const double r = std::sqrt(-extremum / A);  // the roots are z -+ r
+        const Quadratic2& g = s.g;
+        const Vec2 h = 0.5 * g.gradient(p);  // H (p - centre), H = [a b; b c]
+        const Vec2 off{g.c * h.x - g.b * h.y, g.a * h.y - g.b * h.x};  // det H (p - centre)
+        if (norm(edges_[e].curve(z + r) - edges_[e].curve(z - r)) > kCluster &&
+            !(norm(off) <= kOffCurve * std::fabs(g.a * g.c - g.b * g.b)))
+            return false;
+    }
     if (!snap_to_end(s, e, p, kSnap)) s.mark_zero(split_edge(e, z));
     return true;
+}
+
+// A conic tangent to straight arc e at p from inside face s.f (g has the sign of `along_a` along
+// the arc on both sides of p, and the other sign just inside the face): its chord through p
+// pinches the part of the face between them into two, which touch only at p. p is where both
+// end. (Generate_pairs.py "coplanar" 14496: a parabola touching T''s edge, the face below it two
+// lobes joined 2.8e-17 wide; a later region line through p found its two crossings that close,
+// inserted no chord, and gave both lobes to one side, d^2 0.002 off on the other.)
+bool DomainMesh::pinches_face(const SplitCall& s, int e, Vec2 p, double along_a) const {
+    const int h = half_[2 * e].face == s.f ? 2 * e : 2 * e + 1;
+    const Vec2 dir = vertices_[target(h)].p - vertices_[half_[h].origin].p;
+    const double inward = dot(s.g.gradient(p), perp(dir));  // the face lies left of its half-edges
+    return (along_a > 0 && inward < 0) || (along_a < 0 && inward > 0);
 }
 
 // A straight arc along one line of a line pair g = 0 (both its ends within kOnCurve of that

@@ -37,11 +37,17 @@ const char* region_name(Region r);
 // is geometry, not rounding, however small against the quadratics' size. So they tie only to
 // 1e-13 relative (their rounding is ~1e-16): a source standing 2e-6 off the vertical with its edge
 // 1e-6 under T' has the two 4e-12 apart where d^2 is 5e-6, and with the allowance of 1e-11 the
-// face's domain took the edge's polynomial, 3e-7 above d^2 (independent pair 803). Edges and
-// corners among themselves, and faces among themselves, keep 1e-11: three corners rounded off a
-// line 1e8 from the origin make edges 5e-12 apart, and cutting between them makes conics of noise.
+// face's domain took the edge's polynomial, 3e-7 above d^2 (independent pair 803). A corner's
+// quadratic and an edge's through it differ the same way, by the square of the offset along the
+// edge, ((p - c).e)^2: an edge standing 1.5e-6 off the vertical whose end lies 1.5e-6 under T'
+// has the two 1.6e-12 apart where d^2 is 2e-12, and with 1e-11 the corner's domain kept its
+// polynomial, twice d^2, over the edge's region (generate_pairs.py "dupfaces" 13814). So features
+// of different dimension tie only to 1e-13. Edges among themselves, corners among themselves and
+// faces among themselves keep 1e-11: three corners rounded off a line 1e8 from the origin make
+// edges 5e-12 apart, and cutting between them makes conics of noise.
+inline int feature_dimension(Region k) { return k == Region::abc ? 2 : k <= Region::ca ? 1 : 0; }
 inline bool same_feature_quadratic(const Quadratic2& p, Region kp, const Quadratic2& q, Region kq, double delta) {
-    return same_quadratic(p, q, delta, (kp == Region::abc) != (kq == Region::abc) ? 1e-13 : 1e-11);
+    return same_quadratic(p, q, delta, feature_dimension(kp) != feature_dimension(kq) ? 1e-13 : 1e-11);
 }
 
 // inside: n.p >= offset. `all` and `none` for boundary planes parallel to the target's plane.

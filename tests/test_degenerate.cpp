@@ -633,6 +633,34 @@ TEST(Degenerate, SourceStandingJustUnderTheTargetKeepsItsFacesQuadratic) {
     validate_every_insertion(A, B);
 }
 
+// generate_pairs.py "nearcoinc_far" 13239: a cube and its copy 2.4e6 from the origin, moved by
+// 2.8e-6 of the target's size (A's top face above B's target 0). Beyond A's corner, outside both
+// vertical faces, the nearest feature is their vertical edge; the corner's quadratic lies h^2 =
+// 7.6e-12 above it everywhere, within the tie allowance of 1e-11 that edges and corners had
+// between them, so the corner's domain kept its quadratic where the edge is nearer: 9.6e-12
+// where d^2 is 2e-12. A corner and an edge now tie only to 1e-13, as a face and an edge do.
+TEST(Degenerate, CornerAboveAVerticalEdgeDoesNotTieWithIt) {
+    const std::vector<Vec3> pa = {{-2374861.4795741886, 2374861.4797022929, -2374861.4798181583},
+                                  {-2374862.9032908403, 2374865.7183102369, -2374853.6337251649},
+                                  {-2374861.3999953917, 2374869.4308781996, -2374865.7607538714},
+                                  {-2374862.8237120439, 2374873.6694861436, -2374857.914660878},
+                                  {-2374852.5621395921, 2374862.0854630242, -2374860.1889441027},
+                                  {-2374853.9858562443, 2374866.3240709677, -2374852.3428511093},
+                                  {-2374852.4825607957, 2374870.0366389309, -2374864.4698798163},
+                                  {-2374853.9062774475, 2374874.2752468749, -2374856.6237868229}};
+    const std::vector<Vec3> pb = {{-2374861.4795657424, 2374861.4795657424, -2374861.4795657424},
+                                  {-2374862.9032823942, 2374865.7181736864, -2374853.633472749},
+                                  {-2374861.399986946, 2374869.4307416491, -2374865.7605014555},
+                                  {-2374862.8237035978, 2374873.6693495931, -2374857.9144084621},
+                                  {-2374852.5621311464, 2374862.0853264737, -2374860.1886916873},
+                                  {-2374853.9858477982, 2374866.3239344177, -2374852.3425986939},
+                                  {-2374852.4825523496, 2374870.0365023804, -2374864.4696274004},
+                                  {-2374853.9062690018, 2374874.2751103244, -2374856.623534407}};
+    const std::vector<Tri> cube = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}, {0, 4, 1}, {4, 5, 1},
+                                   {2, 3, 6}, {3, 7, 6}, {0, 2, 4}, {2, 6, 4}, {1, 5, 3}, {5, 7, 3}};
+    validate_every_insertion(make_mesh(pa, cube), make_mesh(pb, cube));
+}
+
 // Independent pair "sliver" 1682: a needle of B lying in the plane of A's target 2, its tip among
 // four nearly concurrent region lines (the needle's edges and their perpendiculars at the tip, 3e-6
 // apart in angle). Cutting there left a cycle of no area (two vertices 7e-7 apart, a third on the
