@@ -470,6 +470,8 @@ bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along)
 // lobes joined 2.8e-17 wide; a later region line through p found its two crossings that close,
 // inserted no chord, and gave both lobes to one side, d^2 0.002 off on the other.)
 bool DomainMesh::pinches_face(const SplitCall& s, int e, Vec2 p, double along_a) const {
+    for (int end = 0; end < 2; ++end)  // an arc along the curve (g ~ 0 all along) touches nothing
+        if (!(std::fabs(s.g(vertices_[half_[2 * e + end].origin].p)) > kZero)) return false;
     const int h = half_[2 * e].face == s.f ? 2 * e : 2 * e + 1;
     const Vec2 dir = vertices_[target(h)].p - vertices_[half_[h].origin].p;
     const double inward = dot(s.g.gradient(p), perp(dir));  // the face lies left of its half-edges

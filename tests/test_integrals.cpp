@@ -392,6 +392,32 @@ TEST(DomainSplit, ThinParabolaWithATinyLinearTerm) {
     EXPECT_NEAR(area_where_negative(g), want, 1e-3 * want);
 }
 
+// A parabola touching the face's edge from inside, g = y - 2 (x - 1/4)^2 on the unit right
+// triangle: along y = 0, g = -2 (x - 1/4)^2 has a double root and no sign change, and below the
+// parabola the face is two lobes that meet only at (1/4, 0). They are two pieces: kept as one,
+// joined 1e-17 wide, a later cut through that point found its crossings too close for a chord and
+// gave both lobes one side (generate_pairs.py "coplanar" 14496). Areas by hand: the left lobe is
+// the integral of 2 (x - 1/4)^2 over [0, 1/4]; the right one, up to where the parabola meets
+// x + y = 1 (x1 = sqrt(7/16)), that over [1/4, x1] plus the triangle (1 - x1)^2 / 2 beyond.
+TEST(DomainSplit, ParabolaTouchingTheEdgePinchesTheFace) {
+    DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}});
+    const auto pieces = m.split_face(1, Quadratic2{-2, 0, 0, 0.5, 0.5, -0.125});
+    std::vector<double> neg;
+    double pos = 0;
+    for (auto piece : pieces) {
+        if (piece.sign > 0) pos += m.face_area(piece.face);
+        else neg.push_back(m.face_area(piece.face));
+    }
+    std::sort(neg.begin(), neg.end());
+    const double x1 = std::sqrt(7.0 / 16), left = 2 * std::pow(0.25, 3) / 3;
+    const double right = 2 * std::pow(x1 - 0.25, 3) / 3 + (1 - x1) * (1 - x1) / 2;
+    ASSERT_EQ(neg.size(), 2u);
+    EXPECT_NEAR(neg[0], left, 1e-9);
+    EXPECT_NEAR(neg[1], right, 1e-9);
+    EXPECT_NEAR(pos, 0.5 - left - right, 1e-9);
+    EXPECT_EQ(m.validate(), "");
+}
+
 // A point 1e-10 off a thin conic (a branch, an ellipse or a parabola 1e-6 wide and of T''s length)
 // has its foot within about that: the parameter is not read off the coordinate across the conic,
 // which that 1e-10 moves by 1e-4 of the conic's width (degenerate pair "mirror" 3994: a vertex of
