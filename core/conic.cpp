@@ -146,10 +146,19 @@ int CurveComponent::feet(Vec2 p, double (&out)[3]) const {
             n = 2;
             break;
         }
-        case CurveKind::Ellipse: {  // the sides theta, -theta (about u) and pi - theta (about v)
-            const double th = std::atan2(dot(w, v) / norm2(v), dot(w, u) / norm2(u));
-            cand[0][0] = cand[0][1] = th, cand[1][0] = cand[1][1] = -th;
-            cand[2][0] = cand[2][1] = std::remainder(M_PI - th, 2 * M_PI);
+        case CurveKind::Ellipse: {
+            // The sides theta, -theta (about u) and pi - theta (about v), theta read off the
+            // angle and off the coordinate along the longer axis: near the tip of a thin ellipse
+            // the angle is off by the point's offset over the short axis, and from the tip, where
+            // the distance is locally largest, Newton cannot leave (generate_pairs.py "tjunction"
+            // 18728: a vertex on an ellipse 3.6e-6 wide given a foot 5e-6 away, an arc's ends off
+            // its vertices, two faces overlapping).
+            const double X = dot(w, u) / norm2(u), Y = dot(w, v) / norm2(v), th = std::atan2(Y, X);
+            const double ta = norm2(v) > norm2(u) ? (X >= 0 ? std::asin(std::clamp(Y, -1.0, 1.0)) : M_PI - std::asin(std::clamp(Y, -1.0, 1.0)))
+                                                  : std::copysign(std::acos(std::clamp(X, -1.0, 1.0)), Y);
+            cand[0][0] = th, cand[0][1] = std::remainder(ta, 2 * M_PI);
+            cand[1][0] = -th, cand[1][1] = std::remainder(-ta, 2 * M_PI);
+            cand[2][0] = std::remainder(M_PI - th, 2 * M_PI), cand[2][1] = std::remainder(M_PI - ta, 2 * M_PI);
             n = 3;
             break;
         }
