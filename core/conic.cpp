@@ -154,8 +154,13 @@ int CurveComponent::feet(Vec2 p, double (&out)[3]) const {
             // 18728: a vertex on an ellipse 3.6e-6 wide given a foot 5e-6 away, an arc's ends off
             // its vertices, two faces overlapping).
             const double X = dot(w, u) / norm2(u), Y = dot(w, v) / norm2(v), th = std::atan2(Y, X);
-            const double sy = std::asin(std::clamp(Y, -1.0, 1.0)), cx = std::acos(std::clamp(X, -1.0, 1.0));
-            const double ta = norm2(v) > norm2(u) ? (X >= 0 ? sy : M_PI - sy) : std::copysign(cx, Y);
+            double ta;  // only the longer axis's coordinate is read: one inverse function
+            if (norm2(v) > norm2(u)) {
+                const double sy = std::asin(std::clamp(Y, -1.0, 1.0));
+                ta = X >= 0 ? sy : M_PI - sy;
+            } else {
+                ta = std::copysign(std::acos(std::clamp(X, -1.0, 1.0)), Y);
+            }
             cand[0][0] = th, cand[0][1] = std::remainder(ta, 2 * M_PI);
             cand[1][0] = -th, cand[1][1] = std::remainder(-ta, 2 * M_PI);
             cand[2][0] = std::remainder(M_PI - th, 2 * M_PI), cand[2][1] = std::remainder(M_PI - ta, 2 * M_PI);
