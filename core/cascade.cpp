@@ -337,7 +337,7 @@ private:
         ts.run();
         ++solves_;
         if (ts.stopped_early()) {  // below L: its running maximum bounds it from above
-            atomic_max(bound_sq_[p.target], ts.max_sq() + ts.rounding_sq());
+            atomic_max(bound_sq_[p.target], ts.upper_sq());
             return;
         }
         atomic_max(L_, ts.max_sq());

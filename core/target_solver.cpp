@@ -170,8 +170,20 @@ void TargetSolver::begin() {
     phase_ = Phase::NextSource;
 }
 
-// Radius test with a relative margin: rounding must never cull a voxel or source that could matter.
-bool TargetSolver::beyond(double d2) const { return d2 > max_sq_ * (1 + 1e-9) + 1e-300; }
+// Radius test with a relative margin: rounding must never cull a voxel or source that could matter;
+// nor may the domain mesh's resolution. Where the meshes nearly coincide, a sliver 5e-8 of T' wide
+// along an edge kept the source face's plane distance, 1.6e-9, beside the edge's 4.5e-9: the
+// radius shrank to the former, the source holding the nearest edge was culled, and the target's
+// maximum came out 4.9e-9 at that corner (generate_pairs.py "nearcoinc_far" 20391).
+bool TargetSolver::beyond(double d2) const {
+    const double r = std::sqrt(max_sq_) + kResolution * frame_.scale;
+    return d2 > r * r * (1 + 1e-9) + 1e-300;
+}
+
+double TargetSolver::upper_sq() const {
+    const double r = std::sqrt(max_sq_) + kResolution * frame_.scale;
+    return r * r + rounding_sq();
+}
 
 // A lower bound of d^2 from T' to source s, tighter than the boxes': every point of T' is within
 // `reach` of its centroid, so the source is at least |centroid - source| - reach away from all of
@@ -502,8 +514,8 @@ bool TargetSolver::step() {
     uint32_t s;
     double dist;
     size_t voxel;
-    // Stop only when the running maximum is below the bound by more than its rounding.
-    if (stop_below_ >= 0 && max_sq_ + rounding_sq() < stop_below_) { stopped_early_ = true; finish(); return false; }
+    // Stop only when the running maximum is below the bound by more than its rounding and resolution.
+    if (stop_below_ >= 0 && upper_sq() < stop_below_) { stopped_early_ = true; finish(); return false; }
     if (!next_source(s, dist, voxel)) { finish(); return false; }
     insert(s, dist, voxel);
     return true;

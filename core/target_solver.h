@@ -118,6 +118,13 @@ public:
     // tiny against max_sq() unless the meshes (nearly) coincide, where d^2 is a small difference of
     // large terms.
     double rounding_sq() const;
+    // The domain mesh resolves d^2 to within kResolution of T''s size (frame units): a sliver
+    // narrower than kVertexTolerance along a boundary stays with its neighbour, and a vertex may
+    // sit up to 1e-6 off its curves (DomainMesh::kOffCurve). As d is 1-Lipschitz, d over T' is at
+    // most sqrt(max_sq()) + kResolution * scale: the search radius culls with that, and
+    // upper_sq() bounds the true maximum by it (rounding included).
+    static constexpr double kResolution = 1e-6;
+    double upper_sq() const;
     // Voxel states for display: 0 unseen, 1 pending, 2 visited, 3 culled.
     const std::vector<std::pair<size_t, uint8_t>>& voxel_states() const { return voxel_log_; }
     // The domain mesh's invariants, then per domain (issue 8): its label names a feature of an
