@@ -17,6 +17,29 @@ Interval Quadratic2::range(Vec2 lo, Vec2 hi) const {
 }
 
 
+// The least value of q over [0, 1]^2 (at least 0: the quadratics compared are squared distances),
+// from the points where it can be: the corners, the least point along each side, and the centre
+// if q is convex there. Each candidate is a value of q, so a rounded centre errs upwards only.
+double min_on_unit_square(const Quadratic2& q) {
+    double m = std::min({q({0, 0}), q({1, 0}), q({0, 1}), q({1, 1})});
+    for (double s : {0.0, 1.0}) {
+        if (q.c > 0) {  // x = s: c y^2 + 2 (b s + e) y + ...
+            const double y = -(q.b * s + q.e) / q.c;
+            if (y > 0 && y < 1) m = std::min(m, q({s, y}));
+        }
+        if (q.a > 0) {  // y = s
+            const double x = -(q.b * s + q.d) / q.a;
+            if (x > 0 && x < 1) m = std::min(m, q({x, s}));
+        }
+    }
+    const double det = q.a * q.c - q.b * q.b;
+    if (q.a > 0 && det > 0) {
+        const Vec2 x{(q.b * q.e - q.c * q.d) / det, (q.b * q.d - q.a * q.e) / det};
+        if (x.x > 0 && x.x < 1 && x.y > 0 && x.y < 1) m = std::min(m, q(x));
+    }
+    return std::max(m, 0.0);
+}
+
 std::string Quadratic2::to_string() const {
     char buf[256];
     std::snprintf(buf, sizeof buf, "%.9g x^2 %+.9g xy %+.9g y^2 %+.9g x %+.9g y %+.9g", a, 2 * b, c, 2 * d, 2 * e, f);
@@ -361,7 +384,7 @@ double roots_moved(double l1, double disc, double dropped) {
 // arms lost). A b2 within its rounding (eps_b2: q's coefficients are at most 1) is not a parabola:
 // where q only touches 0 (a double line, disc ~ 0) b2 = 1e-16 would move its roots by 1e-8
 // (independent pair "parallel_offset" 1389: a parabola 4e15 long cut across a domain).
-void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, double b1, double b2, double disc,
+void decompose_parabolic(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec2 e2, double b1, double b2, double disc,
                          ConicDecomposition& out) {
     if (std::fabs(b2) > eps_par || (std::fabs(b2) > eps_b2 && roots_moved(l1, disc, 4 * std::fabs(b2)) > 1e-9)) {
         // Y = -(l1 X^2 + 2 b1 X + f) / (2 b2), parametrised by X = Xa + t. Anchored at the vertex
@@ -369,7 +392,26 @@ void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, doubl
         // difference of two sources' edge quadratics often is): there c + t u + t^2 v would be a
         // small point made of huge cancelling terms, so it is anchored in the target instead.
         double Xa = -b1 / l1;
-        double Ya = -(l1 * Xa * Xa + 2 * b1 * Xa + q.f) / (2 * b2);
+        double f = q.f;
+        // The dropped l2 Y^2 is taken to first order about Yr, the vertex's Y where it lies over
+        // T' (the nearest Y of T''s box otherwise): l2 Y^2 = l2 Yr^2 + 2 l2 Yr (Y - Yr) + l2 (Y - Yr)^2,
+        // so b2 += l2 Yr and f -= l2 Yr^2, and only l2 (Y - Yr)^2 is dropped. Dropped whole, it
+        // moved the vertex along the axis by l2 Y^2 / (2 b2), which a small b2 (g nearly flat along
+        // the axis) makes large: generate_pairs3.py "sliver" 506 (and "coinc_retri_far" 272), l2 = -8.9e-11 and b2 = 6.5e-6, a
+        // vertex 1.7e-6 off at Y = 0.5, past kOffCurve from the vertex of the face that ends the
+        // chord there: no chord, and a sliver 0.2 long, where the other source is nearer by up to
+        // 1e-6 in d^2, went to the farther one. Only where that term is a correction (the centre of
+        // the conic, -b2 / l2, lies far along the axis) and l2 is no noise (l2_noise).
+        if (std::fabs(l2) > 1e-14) {
+            const double Ylo = std::min(0.0, e2.x) + std::min(0.0, e2.y), Yhi = std::max(0.0, e2.x) + std::max(0.0, e2.y);
+            const double Ya0 = -(l1 * Xa * Xa + 2 * b1 * Xa + f) / (2 * b2);
+            const double Yr = std::isfinite(Ya0) ? std::min(std::max(Ya0, Ylo), Yhi) : 0.5 * (Ylo + Yhi);
+            if (2 * std::fabs(l2 * Yr) <= std::fabs(b2)) {
+                b2 += l2 * Yr;
+                f -= l2 * Yr * Yr;
+            }
+        }
+        double Ya = -(l1 * Xa * Xa + 2 * b1 * Xa + f) / (2 * b2);
         CurveComponent cc;
         cc.kind = CurveKind::Parabola;
         cc.u = e1;
@@ -382,7 +424,7 @@ void decompose_parabolic(const Quadratic2& q, double l1, Vec2 e1, Vec2 e2, doubl
             // sources' edge quadratics is often nearly two parallel lines (degenerate seed 2463,
             // perpendicular sources: one arm only, and the face was not cut along the other).
             const Vec2 m{0.5, 0.25};
-            const double Xm = dot(m, e1), Ym = dot(m, e2), C = q.f + 2 * b2 * Ym;
+            const double Xm = dot(m, e1), Ym = dot(m, e2), C = f + 2 * b2 * Ym;
             const double disc = b1 * b1 - l1 * C;
             if (disc >= 0) {
                 const double h = -(b1 + std::copysign(std::sqrt(disc), b1));
@@ -474,7 +516,7 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // becomes the parabola's arms, the near one as accurate).
     if (central && std::fabs(b2) > 1e8 * std::fabs(l2)) central = false;
     if (central) decompose_central(q, l1, l2, e1, e2, b1, b2, out);
-    else decompose_parabolic(q, l1, e1, e2, b1, b2, disc, out);
+    else decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
 }
 
 }  // namespace hlens

@@ -67,9 +67,24 @@ inline bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel
 // below 1e-11 of themselves; distinct ones (heights differing by more than delta) never tie.
 // Between features of different dimension (a face's quadratic and an edge's or a corner's, an
 // edge's and a corner's) the relative allowance is 1e-13 (same_feature_quadratic in regions.h).
+//
+// The relative allowance is of the coefficients' size, not of the values: two squared distances
+// whose least values over T' are far below their coefficients may differ by 1e-11 of those while
+// one is many times the other where they are least. Edges parallel to T' along one line of T' at
+// heights 2.8e-6 and 5e-14 (frame units) have quadratics 8e-12 apart everywhere, 0.9e-11 of their
+// size, while d^2 is 6e-7 over much of T' (generate_pairs3.py "parallel_edge" 1079): with the tie a
+// domain kept the higher edge's polynomial, 1.3e-5 relative above d^2. So quadratics tie by the
+// relative allowance only if their least values over T' ([0, 1]^2 holds it) agree as closely as a
+// domain's polynomial must agree with d^2 (1e-7 relative, TargetSolver::validate), or within the
+// absolute allowance: then no tie puts a polynomial farther from d^2 where it is least than that.
+double min_on_unit_square(const Quadratic2& q);
 inline bool same_quadratic(const Quadratic2& p, const Quadratic2& q, double delta, double rel = 1e-11) {
     const double s = std::max(p.scale(), q.scale()), d = (p - q).scale();
-    return d <= rel * s || d <= 2 * std::sqrt(s) * delta + delta * delta;
+    const double absolute = 2 * std::sqrt(s) * delta + delta * delta;
+    if (d <= absolute) return true;
+    if (!(d <= rel * s)) return false;
+    const double mp = min_on_unit_square(p), mq = min_on_unit_square(q);
+    return std::fabs(mp - mq) <= 1e-7 * std::min(mp, mq) + absolute;
 }
 
 // A bound of |q| where |x|, |y| <= 1 (over T' in its frame): what two quadratics the tie rule

@@ -604,9 +604,16 @@ std::string DomainMesh::validate(double area_tol) const {
         // Where the tie rule kept one of two quadratics within its allowance, d^2 may step by
         // their difference (Face::tie_slack; generate_pairs.py "crossing" 11707: two face regions
         // 3e-12 apart merged, a step of 2.6e-12 against the other's edge region).
+        // Where the sources' corners lie so far from T' (in units of its size) that their frame
+        // coordinates' rounding, delta_, exceeds kOffCurve, the region lines and the quadratics'
+        // zero sets are only that precise, and delta_ takes its place: a target 1.4e-11 long on
+        // the edge of a source of size 3 (reach 2e11, delta_ 0.003) has the edge's quadratic
+        // 7.8e-11 above 0 on the region line as computed ("mixed_scale" pairs of a third
+        // generator), far below any distance its coordinates can express.
         const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
         const double jump = std::fabs(qF(m) - qG(m));
-        const double tol = kOffCurve * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + kOffCurve * kOffCurve +
+        const double pos = std::max(kOffCurve, delta_);
+        const double tol = pos * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + pos * pos +
                            1e-13 * (qF.scale() + qG.scale()) + faces_[F].tie_slack + faces_[G].tie_slack;
         if (jump > tol)
             return std::snprintf(buf, sizeof buf, "faces %d and %d: d^2 jumps by %g across edge %zu (%g and %g)", F, G, jump, e,

@@ -258,6 +258,8 @@ private:
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
+    static bool at_centre(const Quadratic2& g, Vec2 p);
+    bool line_pair(SplitCall& s);
     bool split_arc_on_the_curve(SplitCall& s, int e);
     bool snap_to_end(SplitCall& s, int e, Vec2 p, double tol);
     bool pinches_face(const SplitCall& s, int e, Vec2 p, double along_a) const;
@@ -273,6 +275,9 @@ private:
     bool foot_in_face(int f, Vec2 q) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;
     bool chord_inside(const SplitCall& s, const Chord& c) const;
+    double path_area(int from, int to, Box2& box) const;
+    bool pinched_lobes(int f, int va, int vb, int& ha, int& hb) const;
+    void pinch_face(int va, int vb, int ha, int hb);
     void insert_chords(SplitCall& s);
     void rebuild_split_faces(SplitCall& s, std::vector<SplitPiece>& out);
     int side_of_piece(SplitCall& s, int face, const std::vector<int>& loop_hes) const;
@@ -294,6 +299,7 @@ private:
     }
     void claim_cracks(const SourceProjection& src, unsigned may_win);
     size_t leftover_region(int P, const SourceProjection& src, unsigned may_win);
+    bool long_arc_point(int f, Vec2& out) const;
     unsigned regions_holding_corners(int P, const SourceProjection& src, unsigned mask) const;
     bool arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g, const Box2& b) const;
     bool lines_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g) const;

@@ -108,6 +108,32 @@ void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const R
 // A piece across the last region's line is a cut that failed, no region's: it stays with the last
 // (given to the region deepest at its interior point, such a piece of our stress seed 698,
 // overlapping coplanar sources, made d^2 jump by 2.3e-8 relative across an edge).
+// A point just inside face f beside the middle of its longest arc, or interior_point's. On a
+// sliver 1e-7 wide and 0.24 long from a cluster of region lines to T''s edge, interior_point
+// stepped in from a short arc at the cluster, within kCluster of every region there, and the
+// sliver went to the last region (generated "mixed_scale" 862, the paper's insertion: the face
+// region of a coplanar source 5e-8 across, d^2 0 along the whole sliver where it is up to 0.056).
+bool DomainMesh::long_arc_point(int f, Vec2& out) const {
+    int best = -1;
+    double len = 0;
+    for_each_half_edge(f, [&](int h) {
+        const double l = norm(vertices_[target(h)].p - vertices_[half_[h].origin].p);
+        if (l > len) len = l, best = h;
+    });
+    if (best >= 0) {
+        const Edge& E = edges_[best >> 1];
+        const double z = 0.5 * (E.z0 + E.z1);
+        Vec2 d = E.curve.derivative(z);
+        if (best & 1) d = -1.0 * d;
+        if (norm(d) > 0)
+            for (double step : {1e-3, 1e-5, 1e-7, 1e-9}) {
+                const Vec2 cand = E.curve(z) + (step * std::min(1.0, len) / norm(d)) * perp(d);
+                if (point_in_face(f, cand)) { out = cand; return true; }
+            }
+    }
+    return interior_point(f, out);
+}
+
 size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned may_win) {
     const size_t last = src.regions.size() - 1;
     double lo = HUGE_VAL, hi = -HUGE_VAL;
@@ -116,7 +142,7 @@ size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned 
         lo = std::min(lo, m), hi = std::max(hi, m);
     });
     Vec2 x;
-    if (!(lo < -kCluster) || hi > kCluster || !interior_point(P, x) || in_region(src.regions[last], x, kCluster)) return last;
+    if (!(lo < -kCluster) || hi > kCluster || !long_arc_point(P, x) || in_region(src.regions[last], x, kCluster)) return last;
     const size_t best = deepest_region(src, x);
     return (may_win >> best) & 1u ? best : last;
 }

@@ -202,7 +202,14 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
                     for (int f : members[c])
                         if (f != L.domain[i])
                             near = std::min(near, feature_distance2(p3, src[f / 8][0], src[f / 8][1], src[f / 8][2], (Region)(f % 8)));
-                tie = near <= best_d2[i] * (1 + 1e-9) + 1e-300;
+                // As near to within delta (the rounding of the sources' frame coordinates, the
+                // tie rule's allowance on heights): distances that close are not resolved by the
+                // quadratics. (A third generator's "stacked" 2457: layers 1e-13 of T' apart, about
+                // an ulp of coordinates 2.7e4; a tie kept one layer's quadratic where another is
+                // 1.4e-26 nearer in d^2, a third layer, nearer than the kept quadratic, took the
+                // domain, and on 625 samples a layer 1.6e-27 away in d^2 was nearest where the
+                // label's is 1.9e-27 away: 3.6e-15 apart in distance, delta 4.3e-14.)
+                tie = near <= best_d2[i] * (1 + 1e-9) + 1e-300 || std::sqrt(near) <= std::sqrt(best_d2[i]) + delta;
                 const Quadratic2* q = proj[s].degenerate ? region_quadratic(proj[s], r) : nullptr;
                 tie = tie || (q && std::fabs((*q)(p) - best_d2[i]) <= 1e-9 * best_d2[i] + 64 * delta);
             }

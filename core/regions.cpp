@@ -92,7 +92,14 @@ struct Projector {
         Vec3 u = p1 - p0;
         u = u / norm(u);
         Vec3 r = rel(p0);
-        Vec3 perp_r = r - dot(u, r) * u;  // M r, with M = I - u u^T
+        // M r, with M = I - u u^T; again where r is long: r may be 1e7 frame units (a target 1e-7
+        // of the source's size), and one pass leaves M r off orthogonal to u by 1e-16 of |r|. Then
+        // d^2 has a linear term along the edge and does not vanish on it: 6.9e-10 where a coplanar
+        // face's region meets the edge's ("mixed_scale" pairs of a third generator, a target 2e-10
+        // long on the edge of a source 7e-3 long; a jump across the region line that validate()
+        // reports). Where |r| < 1e3 that term is below the quadratics' rounding: one pass.
+        Vec3 perp_r = r - dot(u, r) * u;
+        if (norm2(r) > 1e6) perp_r = perp_r - dot(u, perp_r) * u;
         double u1 = dot(F.e1, u), u2 = dot(F.e2, u);
         Quadratic2 q;
         q.a = 1 - u1 * u1; q.b = -u1 * u2; q.c = 1 - u2 * u2;

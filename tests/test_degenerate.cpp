@@ -20,6 +20,7 @@
 #include <hlens/label_check.h>
 #include <hlens/mesh_io.h>
 #include <hlens/point_triangle.h>
+#include <hlens/regions.h>
 #include <hlens/target_solver.h>
 #include <hlens/voxel_grid.h>
 
@@ -659,6 +660,77 @@ TEST(Degenerate, CornerAboveAVerticalEdgeDoesNotTieWithIt) {
     const std::vector<Tri> cube = {{0, 1, 3}, {0, 3, 2}, {4, 6, 7}, {4, 7, 5}, {0, 4, 1}, {4, 5, 1},
                                    {2, 3, 6}, {3, 7, 6}, {0, 2, 4}, {2, 6, 4}, {1, 5, 3}, {5, 7, 3}};
     validate_every_insertion(make_mesh(pa, cube), make_mesh(pb, cube));
+}
+
+// A target 2e-10 long lying on the long edge of a coplanar source 7e-3 long (a third, blind
+// generator's "mixed_scale" 246): in the target's frame the source's corners are 2.5e7 units away.
+// The edge's quadratic must vanish on the edge's own line: a point of that line near the target,
+// found in long double from the input coordinates, has d^2 = 0 there up to the rounding of its
+// frame coordinates (2.5e-9 units, so ~1e-17). Projecting r once onto the plane normal to the edge
+// left it off by 1e-16 of |r| along the edge, and the quadratic was 6.9e-10 on the line; validate()
+// saw d^2 jump by that across the region line. Then the same with the target 1.4e-11 long against
+// a source of size 3 ("mixed_scale" 78: 2e11 units away, coordinates rounded to 2e-5 units in the
+// frame): the continuity check allows for that rounding (DomainMesh::delta()), every insertion,
+// both orders.
+TEST(Degenerate, TinyTargetOnALongCoplanarEdge) {
+    const TriangleMesh A = make_mesh({{-2.5864882926926294, -8.56517091668887, -43.252309927800795},
+                                      {-2.586488292691468, -8.5651709166883, -43.252309927800795},
+                                      {-2.58648829263236, -8.565170916889791, -43.252309927800795}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-2.5817236234679517, -8.567553251372713, -43.252309927800795},
+                                      {-2.5888706272337227, -8.567553251372713, -43.252309927800795},
+                                      {-2.5817236234679517, -8.560406247606942, -43.252309927800795}},
+                                     {{0, 1, 2}});
+    const TargetFrame frame = TargetFrame::make(A.corners(0));
+    const SourceProjection src = project_source(frame, B.corners(0), 0);
+    const auto sc = B.corners(0);
+    int edges = 0;
+    for (const SourceRegion& r : src.regions) {
+        if (r.kind != Region::ab && r.kind != Region::bc && r.kind != Region::ca) continue;
+        const int i = r.kind == Region::ab ? 0 : r.kind == Region::bc ? 1 : 2;
+        const Vec3 p0 = sc[i], p1 = sc[(i + 1) % 3];
+        // The foot of the frame's origin on the edge's line, in long double.
+        long double u[3] = {(long double)p1.x - p0.x, (long double)p1.y - p0.y, (long double)p1.z - p0.z};
+        long double w[3] = {(long double)frame.origin.x - p0.x, (long double)frame.origin.y - p0.y, (long double)frame.origin.z - p0.z};
+        const long double t = (w[0] * u[0] + w[1] * u[1] + w[2] * u[2]) / (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        // Its frame coordinates from the offset to the origin, never rounded to world coordinates.
+        const long double f[3] = {t * u[0] - w[0], t * u[1] - w[1], t * u[2] - w[2]};
+        const Vec2 q{(double)((f[0] * frame.e1.x + f[1] * frame.e1.y + f[2] * frame.e1.z) / frame.scale),
+                     (double)((f[0] * frame.e2.x + f[1] * frame.e2.y + f[2] * frame.e2.z) / frame.scale)};
+        if (norm(q) > 10) continue;  // only the edge passing by the target
+        ++edges;
+        EXPECT_LE(std::fabs(r.poly(q)), 1e-14) << region_name(r.kind) << " at (" << q.x << ", " << q.y << ")";
+    }
+    EXPECT_EQ(edges, 1);  // the hypotenuse
+    validate_every_insertion(A, B);
+    const TriangleMesh A2 = make_mesh({{1.0000000000071472, 1.5573758420233564e-12, 0.0},
+                                       {1.0000000000043996, 5.843819770074282e-12, 0.0},
+                                       {1.0000000000027482, 6.77893731734303e-12, 0.0},
+                                       {0.9999999999947047, 5.0464472103201595e-12, 0.0},
+                                       {0.9999999999934314, 3.218765707403769e-12, 0.0},
+                                       {0.9999999999957544, -5.956712413722837e-12, 0.0},
+                                       {0.9999999999975909, -6.906790752026716e-12, 0.0},
+                                       {1.0000000000010165, -7.243892674938265e-12, 0.0}},
+                                      {{0, 1, 7}, {1, 6, 7}, {1, 2, 6}, {2, 5, 6}, {2, 3, 5}, {3, 4, 5}});
+    const TriangleMesh B2 = make_mesh({{-1, -1, 0}, {-1, 2, 0}, {2, -1, 0}}, {{0, 2, 1}});
+    validate_every_insertion(A2, B2);
+}
+
+// A grid of eight coplanar triangles 4.2e-7 across (1e-7 of the target's size) at the middle of a
+// large target (a third generator's "mixed_scale" 862): every region line of every source passes
+// within 1e-7 of one point, below the domain mesh's resolution. In the paper's insertion a sliver
+// 1e-7 wide and 0.24 long, from that cluster to T''s edge (a source's edge region, as far as the
+// cuts could tell), was left to the last region, the face region of a source 5e-8 across, whose
+// quadratic is 0: leftover_region looked at a point stepped in from a short arc at the cluster,
+// inside that region to 1e-7, not at the sliver's middle (DomainMesh::long_arc_point). d^2 jumped
+// by 0.014 across its edges. Every target, both orders, every insertion.
+TEST(Degenerate, SourcesBelowTheResolutionLeaveNoSliverToTheirFaceRegion) {
+    const double h = 2.1247848137551703e-07;
+    std::vector<Vec3> pb;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) pb.push_back({i * h, j * h, 0});
+    const std::vector<Tri> grid = {{0, 3, 4}, {0, 4, 1}, {1, 4, 5}, {1, 5, 2}, {3, 6, 7}, {3, 7, 4}, {4, 7, 8}, {4, 8, 5}};
+    validate_every_insertion(make_mesh({{-1, -1, 0}, {2, -1, 0}, {-1, 2, 0}}, {{1, 2, 0}}), make_mesh(pb, grid));
 }
 
 // Independent pair "sliver" 1682: a needle of B lying in the plane of A's target 2, its tip among
