@@ -273,6 +273,7 @@ private:
     bool on_component(const SplitCall& s, const CurveComponent& comp, int v, double t) const;
     bool flat_boundary_edge(const SplitCall& s, int u, int v) const;
     bool foot_in_face(int f, Vec2 q) const;
+    bool short_chord_inside(int f, const Chord& c, Vec2 mid) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;
     bool chord_inside(const SplitCall& s, const Chord& c) const;
     double path_area(int from, int to, Box2& box) const;
