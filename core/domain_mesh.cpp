@@ -446,18 +446,22 @@ bool DomainMesh::interior_point(int f, Vec2& out) const {
     for (int h : hes) order.push_back({-norm(vertices_[target(h)].p - vertices_[half_[h].origin].p), h});
     std::sort(order.begin(), order.end());
     for (double step : {1e-3, 1e-5, 1e-2, 1e-7, 1e-9})
-        for (size_t i = 0; i < order.size() && i < 8; ++i) {
-            int h = order[i].second;
-            const Edge& E = edges_[h >> 1];
-            double z = 0.5 * (E.z0 + E.z1);
-            Vec2 m = E.curve(z), d = E.curve.derivative(z);
-            if (h & 1) d = -1.0 * d;
-            double l = norm(d);
-            if (l == 0) continue;
-            Vec2 cand = m + (step * std::min(1.0, -order[i].first + 1e-300) / l) * perp(d);
-            if (point_in_face(f, cand)) { out = cand; return true; }
-        }
+        for (size_t i = 0; i < order.size() && i < 8; ++i)
+            if (point_beside(f, order[i].second, -order[i].first + 1e-300, step, out)) return true;
     return false;
+}
+
+bool DomainMesh::point_beside(int f, int h, double len, double step, Vec2& out) const {
+    const Edge& E = edges_[h >> 1];
+    const double z = 0.5 * (E.z0 + E.z1);
+    Vec2 m = E.curve(z), d = E.curve.derivative(z);
+    if (h & 1) d = -1.0 * d;
+    const double l = norm(d);
+    if (l == 0) return false;
+    const Vec2 cand = m + (step * std::min(1.0, len) / l) * perp(d);
+    if (!point_in_face(f, cand)) return false;
+    out = cand;
+    return true;
 }
 
 int DomainMesh::face_at(Vec2 p) const {

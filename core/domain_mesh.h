@@ -301,6 +301,9 @@ private:
     void claim_cracks(const SourceProjection& src, unsigned may_win);
     size_t leftover_region(int P, const SourceProjection& src, unsigned may_win);
     bool long_arc_point(int f, Vec2& out) const;
+    // A point of face f stepped `step` times min(1, len) to the inside from the middle of
+    // half-edge h (interior_point, long_arc_point); false if that is not in f.
+    bool point_beside(int f, int h, double len, double step, Vec2& out) const;
     unsigned regions_holding_corners(int P, const SourceProjection& src, unsigned mask) const;
     bool arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g, const Box2& b) const;
     bool lines_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g) const;

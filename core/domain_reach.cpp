@@ -97,17 +97,6 @@ void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const R
     if (passed_over && may_win) claim_cracks(src, may_win);
 }
 
-// What the regions before the last left is in the last one (the regions tile the plane), but
-// where their lines cross within kCluster of a point a cut may drop its chord and leave part of
-// another region outside it: a sliver 3e-9 wide and 6e-4 long of a source's corner region, between
-// two of its lines 4e-6 rad apart, went to the face region, 2e-6 from it (generate_pairs.py "perp"
-// 4531, the first insertion), and in the paper's insertion a wedge 1e-7 wide and 0.024 long of a
-// corner region, 0.024 outside a face region whose edge line is T''s edge ("perp" 10291). A piece
-// with a corner more than kCluster outside the last region, none more than kCluster inside it and
-// its interior point outside goes to the region deepest at that point, if that one may be nearer.
-// A piece across the last region's line is a cut that failed, no region's: it stays with the last
-// (given to the region deepest at its interior point, such a piece of our stress seed 698,
-// overlapping coplanar sources, made d^2 jump by 2.3e-8 relative across an edge).
 // A point just inside face f beside the middle of its longest arc, or interior_point's. On a
 // sliver 1e-7 wide and 0.24 long from a cluster of region lines to T''s edge, interior_point
 // stepped in from a short arc at the cluster, within kCluster of every region there, and the
@@ -120,20 +109,23 @@ bool DomainMesh::long_arc_point(int f, Vec2& out) const {
         const double l = norm(vertices_[target(h)].p - vertices_[half_[h].origin].p);
         if (l > len) len = l, best = h;
     });
-    if (best >= 0) {
-        const Edge& E = edges_[best >> 1];
-        const double z = 0.5 * (E.z0 + E.z1);
-        Vec2 d = E.curve.derivative(z);
-        if (best & 1) d = -1.0 * d;
-        if (norm(d) > 0)
-            for (double step : {1e-3, 1e-5, 1e-7, 1e-9}) {
-                const Vec2 cand = E.curve(z) + (step * std::min(1.0, len) / norm(d)) * perp(d);
-                if (point_in_face(f, cand)) { out = cand; return true; }
-            }
-    }
+    if (best >= 0)
+        for (double step : {1e-3, 1e-5, 1e-7, 1e-9})
+            if (point_beside(f, best, len, step, out)) return true;
     return interior_point(f, out);
 }
 
+// What the regions before the last left is in the last one (the regions tile the plane), but
+// where their lines cross within kCluster of a point a cut may drop its chord and leave part of
+// another region outside it: a sliver 3e-9 wide and 6e-4 long of a source's corner region, between
+// two of its lines 4e-6 rad apart, went to the face region, 2e-6 from it (generate_pairs.py "perp"
+// 4531, the first insertion), and in the paper's insertion a wedge 1e-7 wide and 0.024 long of a
+// corner region, 0.024 outside a face region whose edge line is T''s edge ("perp" 10291). A piece
+// with a corner more than kCluster outside the last region, none more than kCluster inside it and
+// its interior point outside goes to the region deepest at that point, if that one may be nearer.
+// A piece across the last region's line is a cut that failed, no region's: it stays with the last
+// (given to the region deepest at its interior point, such a piece of our stress seed 698,
+// overlapping coplanar sources, made d^2 jump by 2.3e-8 relative across an edge).
 size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned may_win) {
     const size_t last = src.regions.size() - 1;
     double lo = HUGE_VAL, hi = -HUGE_VAL;

@@ -454,12 +454,12 @@ bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along)
     // (generate_pairs3.py "tjunction" 1129: 1.55e-14 scaled at a centre on the face's boundary
     // edge, two noise roots 1.3e-6 either side became vertices off both lines, one line's chord
     // had one end, and a quadrant kept the farther source).
-    if (!(std::fabs(extremum) <= kZero) && !(at_centre(s.g, p) && line_pair(s))) return false;
+    const bool centre = at_centre(s.g, p);
+    if (!(std::fabs(extremum) <= kZero) && !(centre && line_pair(s))) return false;
     if (!(norm(s.g.gradient(p)) <= 1e-6) && !pinches_face(s, e, p, A)) return false;  // a tangent conic: nothing ends there
     if ((extremum > 0 && A < 0) || (extremum < 0 && A > 0)) {
         const double r = std::sqrt(-extremum / A);  // the roots are z -+ r
-        const Quadratic2& g = s.g;
-        if (norm(edges_[e].curve(z + r) - edges_[e].curve(z - r)) > kCluster && !at_centre(g, p)) return false;
+        if (norm(edges_[e].curve(z + r) - edges_[e].curve(z - r)) > kCluster && !centre) return false;
     }
     if (!snap_to_end(s, e, p, kSnap)) s.mark_zero(split_edge(e, z));
     return true;

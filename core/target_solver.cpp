@@ -176,12 +176,12 @@ void TargetSolver::begin() {
 // radius shrank to the former, the source holding the nearest edge was culled, and the target's
 // maximum came out 4.9e-9 at that corner (generate_pairs.py "nearcoinc_far" 20391).
 bool TargetSolver::beyond(double d2) const {
-    const double r = std::sqrt(max_sq_) + kResolution * frame_.scale;
+    const double r = resolved_radius();
     return d2 > r * r * (1 + 1e-9) + 1e-300;
 }
 
 double TargetSolver::upper_sq() const {
-    const double r = std::sqrt(max_sq_) + kResolution * frame_.scale;
+    const double r = resolved_radius();
     return r * r + rounding_sq();
 }
 

@@ -152,6 +152,8 @@ private:
     bool next_nearest_source(uint32_t& s, double& dist, size_t& voxel);
     void queue_neighbours(size_t voxel);
     bool beyond(double d2) const;                          // farther than the search radius
+    // sqrt(max_sq_) widened by the domain mesh's resolution (kResolution): beyond(), upper_sq().
+    double resolved_radius() const { return std::sqrt(max_sq_) + kResolution * frame_.scale; }
     double centroid_bound2(uint32_t s, double* dc = nullptr) const;
     void insert(uint32_t s, double dist, size_t voxel);
     void update_maximum();
