@@ -614,10 +614,16 @@ std::string DomainMesh::validate(double area_tol) const {
         // the edge of a source of size 3 (reach 2e11, delta_ 0.003) has the edge's quadratic
         // 7.8e-11 above 0 on the region line as computed ("mixed_scale" pairs of a third
         // generator), far below any distance its coordinates can express.
+        // The quadratics' own values are as precise as the tie rule's absolute allowance says (a
+        // height h off by delta_ puts h^2 off by 2 h delta_ + delta_^2): a constant plane quadratic
+        // and an edge's, from corners 4e4 from the frame's origin (a target 1e-5 over a coplanar
+        // strip of size 1, generate_pairs3.py "mixed_scale" 4698), differed by 2.2e-12 on their
+        // shared region line, where d^2 is 0.41 and has no gradient.
         const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
         const double jump = std::fabs(qF(m) - qG(m));
         const double pos = std::max(kOffCurve, delta_);
-        const double tol = pos * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + pos * pos +
+        const double rounding = 2 * std::sqrt(std::max(qF.scale(), qG.scale())) * delta_ + delta_ * delta_;
+        const double tol = pos * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + pos * pos + rounding +
                            1e-13 * (qF.scale() + qG.scale()) + faces_[F].tie_slack + faces_[G].tie_slack;
         if (jump > tol)
             return std::snprintf(buf, sizeof buf, "faces %d and %d: d^2 jumps by %g across edge %zu (%g and %g)", F, G, jump, e,

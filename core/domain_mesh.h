@@ -142,6 +142,9 @@ public:
     // curves may sit this far off a third. A domain's boundary, and so the domain, may reach this
     // far past its label's region.
     static constexpr double kVertexTolerance = 1e-7;
+    // A chord between vertices this close is not inserted (domain_split.cpp, find_chords): what
+    // lies across it, a sliver that thin, stays whole on the side of the rest of its face.
+    static constexpr double kTinyChord = 1e-11;
 
     // Drop the dead vertices, edges and faces (the construction's history: on a coarse target among
     // fine sources, 6 of 7 edges) and renumber the live ones in their order; the outside face
@@ -260,6 +263,7 @@ private:
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
     static bool at_centre(const Quadratic2& g, Vec2 p);
     bool line_pair(SplitCall& s);
+    bool roots_on_the_lines(int e, double z0, double z1) const;
     bool split_arc_on_the_curve(SplitCall& s, int e);
     bool snap_to_end(SplitCall& s, int e, Vec2 p, double tol);
     bool pinches_face(const SplitCall& s, int e, Vec2 p, double along_a) const;

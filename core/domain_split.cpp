@@ -28,7 +28,7 @@ constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
 // A vertex this far from a component is still on it where g is flat between them (flat_between):
 // there rounding moves roots by up to 1e-5 ("mirror" 7242), far more than kOffCurve.
 constexpr double kFlatTip = 1e-4;
-constexpr double kTinyChord = 1e-11;  // a chord between vertices this close is not inserted (find_chords)
+constexpr double kTinyChord = DomainMesh::kTinyChord;
 constexpr double kTwoPi = 6.283185307179586;
 
 // How far p is from the point of `comp` at p's parameter (its foot on a line; near a conic, close
@@ -460,9 +460,30 @@ bool DomainMesh::split_at_touching_point(SplitCall& s, int e, const Poly& along)
     if ((extremum > 0 && A < 0) || (extremum < 0 && A > 0)) {
         const double r = std::sqrt(-extremum / A);  // the roots are z -+ r
         if (norm(edges_[e].curve(z + r) - edges_[e].curve(z - r)) > kCluster && !centre) return false;
+        if (centre && !(std::fabs(extremum) <= kZero) && roots_on_the_lines(e, z - r, z + r)) return false;
     }
     if (!snap_to_end(s, e, p, kSnap)) s.mark_zero(split_edge(e, z));
     return true;
+}
+
+// Near a line pair's centre, g's roots along straight arc e (z0 and z1, apart by more than kCluster
+// where g's extremum is beyond kZero) that lie on the arc are where the pair's lines (tmp_.dec,
+// line_pair) cross it, within kOnCurve: real crossings, each the end of its line's chord, not the
+// rounding of a centre on the arc. (Generate_pairs3.py "rot_tiny_far" 6887, the paper's order: two
+// faces of a tetrahedron meet on an edge piercing T''s plane 1.2e-6 outside T''s edge, their
+// planes' line pair crossing it 1.4e-6 apart, g 4.2e-13 between; taken as one touching point,
+// neither line's crossing ended a chord, and a piece 2e-6 long kept the farther plane, 9 times d^2.)
+bool DomainMesh::roots_on_the_lines(int e, double z0, double z1) const {
+    bool any = false;
+    for (const double z : {z0, z1}) {
+        if (!(z > edges_[e].z0 && z < edges_[e].z1)) continue;
+        const Vec2 q = edges_[e].curve(z);
+        bool on = false;
+        for (const CurveComponent& line : tmp_.dec.components) on = on || off_component(line, q) <= kOnCurve;
+        if (!on) return false;
+        any = true;
+    }
+    return any;
 }
 
 // p lies within kOffCurve of g's centre, where its gradient vanishes.

@@ -56,6 +56,31 @@ static double feature_distance2(const Vec3& p, const Vec3& a, const Vec3& b, con
     return HUGE_VAL;
 }
 
+// The squared distance (frame units) from p to the face of the source s (both in world
+// coordinates) where p's foot on its plane lies inside it, else +inf; in long double, from the
+// signs of the triple products n.(e x (p - corner)) of its three edges. On a sliver the frame's
+// rounded corners cannot say: generate_pairs.py "sliver" 33474, a source 34317 long and 1.7e-4
+// tall (4.7e-9 of T') standing on T' at 90 degrees less 3e-9 rad. Rounding the corners to the
+// frame turns its height's direction by some 2e-8 rad, and so moves the foot of a point 0.28 of T'
+// away by some 6e-9 across it: closest_point_inside put the foot outside where its exact
+// barycentric coordinates (rationals from the input doubles) are (0.13, 0.71, 0.15), and the face,
+// as near as the edges ca and ab to 1e-16, was not counted as a tie with them. In long double
+// from world coordinates the products there are good to some 1e-3 of their size.
+static double face_distance2_world(const Vec3& p, const std::array<Vec3, 3>& s, double scale) {
+    using LD = long double;
+    struct V { LD x, y, z; };
+    auto sub = [](const Vec3& u, const Vec3& v) { return V{(LD)u.x - v.x, (LD)u.y - v.y, (LD)u.z - v.z}; };
+    auto cross = [](const V& u, const V& v) { return V{u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x}; };
+    auto dot = [](const V& u, const V& v) { return u.x * v.x + u.y * v.y + u.z * v.z; };
+    const V n = cross(sub(s[1], s[0]), sub(s[2], s[0]));
+    const LD nn = dot(n, n);
+    if (!(nn > 0)) return HUGE_VAL;
+    for (int k = 0; k < 3; ++k)
+        if (dot(n, cross(sub(s[(k + 1) % 3], s[k]), sub(p, s[k]))) < 0) return HUGE_VAL;
+    const LD h = dot(n, sub(p, s[0]));
+    return (double)(h * h / nn) / (scale * scale);
+}
+
 const Quadratic2* region_quadratic(const SourceProjection& p, Region r) {
     for (const SourceRegion& reg : p.regions)
         if (reg.kind == r) return &reg.poly;
@@ -174,7 +199,8 @@ int projection_feature(const std::vector<SourceProjection>& proj, int t, int nf,
 // first inserted) covers the others' regions (generate_pairs.py "sliver" 2930 and 3970: a domain
 // labelled edge bc 0.57 from bc, where edge ca of the same line is the nearest feature; the
 // region test named the sliver's face, whose plane is 7e-10 relative nearer, its foot far outside).
-void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vector<SourceProjection>& proj, double delta,
+void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vector<std::array<Vec3, 3>>& world,
+                    const TargetFrame& fr, const std::vector<SourceProjection>& proj, double delta,
                     const std::vector<uint32_t>& ids, const LabelCheckOptions& opt, const std::vector<double>& best_d2,
                     LabelCheck& L) {
     const std::vector<int> classes = tie_classes(proj, delta);
@@ -198,6 +224,7 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
                 const Vec2 p = L.sample_point(x, y);
                 const Vec3 p3(p.x, p.y, 0);
                 double near = feature_distance2(p3, src[s][0], src[s][1], src[s][2], r);  // or the nearest of its tie class
+                if (r == Region::abc && near == HUGE_VAL) near = face_distance2_world(fr.to_world(p), world[s], fr.scale);
                 if (const int c = classes[L.domain[i]]; c >= 0)
                     for (int f : members[c])
                         if (f != L.domain[i])
@@ -253,7 +280,7 @@ LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& fr, const std
     std::vector<double> best_d2(n, HUGE_VAL);
 
     map_labels(mesh, src, ids, opt, L, best_d2);
-    compare_labels(src, proj, delta, ids, opt, best_d2, L);
+    compare_labels(src, sources, fr, proj, delta, ids, opt, best_d2, L);
     return L;
 }
 

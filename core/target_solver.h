@@ -133,7 +133,8 @@ public:
     // lies in the label's region or in that of a feature tied with it (up to twice
     // DomainMesh::kVertexTolerance). A point within twice that of the domain's boundary, below the
     // domain mesh's resolution, is held to the gradients times that distance, and to four times
-    // it for the region. Empty if all hold, else the first failure.
+    // it for the region; a domain thinner than DomainMesh::kTinyChord as a whole, only to its
+    // polynomial. Empty if all hold, else the first failure.
     std::string validate(bool thorough = true) const;
 
     // The exact squared distance from a point of T' (frame coordinates) to the inserted sources.

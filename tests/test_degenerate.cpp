@@ -227,6 +227,37 @@ TEST(LabelCheck, ALabelStandsForItsTieClass) {
     EXPECT_GT(L.ties, L.samples / 2);  // the region test names the face over most of T'
 }
 
+// A sliver source 34317 long and 1.7e-4 tall standing on T' at 90 degrees less 3e-9 rad, its long
+// edge T''s edge (generate_pairs.py "sliver" 33474). Its face, its edge ca and its edge ab are as
+// near over most of T' to 1e-16 relative, and the domain's label is the face: at the sample
+// (0.177083333, 0.239583333) the foot on its plane has barycentric coordinates (0.131, 0.714,
+// 0.154), exact rationals from the input doubles (Python's fractions). In the frame's rounded
+// coordinates the foot's place across the sliver is noise (6e-9 of T' against a height of 5e-9):
+// the overlay's closest_point_inside put it outside, so the face's distance was +inf and 24 of 81
+// samples disagreed. The overlay now asks the face in world coordinates, in long double.
+TEST(LabelCheck, SliverFaceStandingOnTheTargetTiesWithItsEdges) {
+    const Vec3 t{-21826.28771505196, -12959.828784949766, -7361.9791501662494}, s1{-44777.437594424438, 12439.498030749723, -4953.8625243227743},
+        s2{-44702.821553566915, 12356.923029221472, -4961.691496245141}, t2{-40530.348883805724, 8460.193534801323, 15980.051816119792};
+    const TriangleMesh A = mesh_of({t, s1, s2}, {{0, 1, 2}}), B = mesh_of({t, s1, t2}, {{0, 1, 2}});
+    VoxelGrid grid(A, B);
+    TargetSolver ts(grid, 1, 0);
+    ts.run();
+    ASSERT_NE(ts.domain_mesh(), nullptr);
+    EXPECT_EQ(ts.validate(true), "");
+    // The frame's double test is the one that cannot tell at the sample.
+    const Vec2 p{0.177083333, 0.239583333};
+    const std::array<Vec3, 3> f = source_in_frame(ts.frame(), {t, s1, s2});
+    ClosestPoint cp;
+    EXPECT_FALSE(closest_point_inside(Vec3(p.x, p.y, 0), f[0], f[1], f[2], cp));
+    const int face = ts.domain_mesh()->face_at(p);
+    ASSERT_GT(face, 0);
+    EXPECT_EQ(ts.domain_mesh()->faces()[face].label.region, Region::abc);
+    const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), {{t, s1, s2}}, {0});
+    ASSERT_GT(L.samples, 5000);
+    EXPECT_EQ(L.disagree, 0) << L.first;
+    EXPECT_GT(L.ties, L.samples / 10);
+}
+
 // Runs `check` on the first, middle and last target of A of every stress pair; it returns a
 // failure ("" if none). A pair fails at its first failing target, which fails the test unless the
 // seed is listed. Returns the seeds that failed.
@@ -1012,4 +1043,84 @@ TEST(Degenerate, PaperEqualsFastOnSliversAndTiedTargets) {
             }
         }
     }
+}
+
+// Generate_pairs3.py "rot_tiny_far" 3051: a strip of four triangles 700 from the origin against a
+// copy turned by 2e-6 about one corner. In the paper's insertion of B's triangle 2 into A's
+// target 3 the region of a corner is a sliver along T''s edge, 2.25e-12 wide at most and 8.4e-7
+// long, too thin for a chord across it (DomainMesh::kTinyChord): it stays with the edge region
+// beside it. Once triangle 3 takes the rest of that domain, a face 2.25e-12 wide remains whose tip
+// lies 4.2e-7 beyond the edge region. validate() holds such a face only to its polynomial; the
+// test checks that the face is there, that each probe of it lies within kTinyChord of its
+// boundary, and that d^2 there is the face's polynomial to the rim allowance.
+TEST(Degenerate, FaceThinnerThanATinyChordIsHeldToItsPolynomial) {
+    const double x = -518.0485605789409;
+    const TriangleMesh A = make_mesh({{x, -45.38512635526228, -706.1413390681194}, {x, -44.88512635526228, -706.1413390681194},
+                                      {x, -44.38512635526228, -706.1413390681194}, {x, -45.38512635526228, -707.1413390681194},
+                                      {x, -44.88512635526228, -707.1413390681194}, {x, -44.38512635526228, -707.1413390681194}},
+                                     {{0, 3, 1}, {3, 4, 1}, {1, 4, 2}, {4, 5, 2}});
+    const TriangleMesh B = make_mesh({{-518.0485605789409, -45.38512635526228, -706.1413390681194},
+                                      {-518.0485607507644, -44.885126355263466, -706.1413401434219},
+                                      {-518.048560922588, -44.38512635526465, -706.1413412187244},
+                                      {-518.04856039356, -45.38512850586722, -707.1413390681171},
+                                      {-518.0485605653836, -44.88512850586841, -707.1413401434195},
+                                      {-518.0485607372073, -44.385128505869595, -707.141341218722}},
+                                     {{0, 3, 1}, {3, 4, 1}, {1, 4, 2}, {4, 5, 2}});
+    const VoxelGrid grid(A, B);
+    TargetSolver ts(grid, 0, 3);
+    ts.on_event([](const Event&) {});  // watched: the paper's insertion
+    int slivers = 0;
+    while (ts.step()) {
+        EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
+        const DomainMesh& m = *ts.domain_mesh();
+        for (size_t f = 1; f < m.faces().size(); ++f) {
+            if (!m.faces()[f].alive || m.faces()[f].infinite) continue;
+            const Box2 b = m.face_box((int)f);
+            if (!(m.face_area((int)f) <= DomainMesh::kTinyChord * norm(b.hi - b.lo))) continue;
+            ++slivers;
+            Vec2 p;
+            ASSERT_TRUE(m.interior_point((int)f, p));
+            EXPECT_TRUE(m.near_boundary((int)f, p, DomainMesh::kTinyChord)) << "face " << f;
+            // d^2 is about 5e-12 here (frame units): its gradient, 2 d, times twice the vertex
+            // tolerance is the rim allowance validate() gives the polynomial.
+            const double d2 = ts.direct_d2(p);
+            EXPECT_NEAR(m.faces()[f].poly(p), d2, 4 * std::sqrt(d2) * 2 * DomainMesh::kVertexTolerance) << "face " << f;
+        }
+    }
+    EXPECT_GT(slivers, 0);
+}
+
+// Generate_pairs3.py "rot_tiny_far" 6887: a tetrahedron 1.2e7 from the origin against a copy turned
+// by 2e-6. Over A's face 2, two faces of the copy meet on an edge that pierces T''s plane 1.2e-6
+// outside T''s edge, near a corner; the difference of their planes' quadratics is a line pair whose
+// centre is that point, and its lines cross T''s edge 1.4e-6 apart. In the paper's insertion the
+// split took the two crossings for one touching point at the centre (split_at_touching_point), so
+// neither line's chord had an end there and a piece 2e-6 long near the corner kept the farther
+// plane: 2.0e-12 where d^2 is 2.2e-13 (frame units). Now crossings on the lines stay crossings.
+TEST(Degenerate, LinePairCentreJustOutsideTheTargetKeepsBothCrossings) {
+    const std::vector<Tri> tetra = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    const TriangleMesh A = make_mesh({{-11361719.651319886, 2615948.73976005, -4524476.0993976975},
+                                      {-11361719.651319886, 2615946.73976005, -4524478.0993976975},
+                                      {-11361721.651319886, 2615946.73976005, -4524476.0993976975},
+                                      {-11361721.651319886, 2615948.73976005, -4524478.0993976975}},
+                                     tetra);
+    const TriangleMesh B = make_mesh({{-11361719.651313774, 2615948.7397551904, -4524476.099398949},
+                                      {-11361719.651325997, 2615946.7397574075, -4524478.099401166},
+                                      {-11361721.651321277, 2615946.7397626927, -4524476.099396446},
+                                      {-11361721.651318494, 2615948.7397649097, -4524478.099394229}},
+                                     tetra);
+    const VoxelGrid grid(A, B);
+    TargetSolver ts(grid, 0, 2);
+    ts.on_event([](const Event&) {});  // watched: the paper's insertion
+    ts.validate_each_insertion(true);
+    EXPECT_NO_THROW(while (ts.step()) {});
+    const DomainMesh& m = *ts.domain_mesh();
+    const Vec2 p{0.499999013, 0.866021901};  // 1e-6 inside T''s edge, 3e-6 from its corner
+    const int f = m.face_at(p);
+    ASSERT_GT(f, 0);
+    // p is more than 1e-7 from the domain's boundary. The polynomial agrees with d^2 to 8e-17
+    // (4e-4 relative), far within the rounding of quadratics from corners 1.2e7 from the origin
+    // (TargetSolver::rounding_sq, 5.7e-14 here); before, it was 9 times d^2.
+    const double d2 = ts.direct_d2(p);
+    EXPECT_NEAR(m.faces()[f].poly(p), d2, 1e-3 * d2);
 }
