@@ -264,6 +264,7 @@ private:
     static bool at_centre(const Quadratic2& g, Vec2 p);
     bool line_pair(SplitCall& s);
     bool roots_on_the_lines(int e, double z0, double z1) const;
+    bool reverse_loops(int a, int b) const;
     bool split_arc_on_the_curve(SplitCall& s, int e);
     bool snap_to_end(SplitCall& s, int e, Vec2 p, double tol);
     bool pinches_face(const SplitCall& s, int e, Vec2 p, double along_a) const;
