@@ -78,9 +78,12 @@ inline bool same_polynomial(const Quadratic2& p, const Quadratic2& q, double rel
 // domain's polynomial must agree with d^2 (1e-7 relative, TargetSolver::validate), or within the
 // absolute allowance: then no tie puts a polynomial farther from d^2 where it is least than that.
 double min_on_unit_square(const Quadratic2& q);
+// The absolute allowance: how far rounding can move a quadratic whose coefficients are of size s
+// and whose inputs are known to within delta (a height h off by delta puts h^2 off by this).
+inline double rounding_allowance(double s, double delta) { return 2 * std::sqrt(s) * delta + delta * delta; }
 inline bool same_quadratic(const Quadratic2& p, const Quadratic2& q, double delta, double rel = 1e-11) {
     const double s = std::max(p.scale(), q.scale()), d = (p - q).scale();
-    const double absolute = 2 * std::sqrt(s) * delta + delta * delta;
+    const double absolute = rounding_allowance(s, delta);
     if (d <= absolute) return true;
     if (!(d <= rel * s)) return false;
     const double mp = min_on_unit_square(p), mq = min_on_unit_square(q);

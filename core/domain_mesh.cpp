@@ -622,7 +622,7 @@ std::string DomainMesh::validate(double area_tol) const {
         const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
         const double jump = std::fabs(qF(m) - qG(m));
         const double pos = std::max(kOffCurve, delta_);
-        const double rounding = 2 * std::sqrt(std::max(qF.scale(), qG.scale())) * delta_ + delta_ * delta_;
+        const double rounding = rounding_allowance(std::max(qF.scale(), qG.scale()), delta_);
         const double tol = pos * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + pos * pos + rounding +
                            1e-13 * (qF.scale() + qG.scale()) + faces_[F].tie_slack + faces_[G].tie_slack;
         if (jump > tol)

@@ -28,7 +28,6 @@ constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
 // A vertex this far from a component is still on it where g is flat between them (flat_between):
 // there rounding moves roots by up to 1e-5 ("mirror" 7242), far more than kOffCurve.
 constexpr double kFlatTip = 1e-4;
-constexpr double kTinyChord = DomainMesh::kTinyChord;
 constexpr double kTwoPi = 6.283185307179586;
 
 // How far p is from the point of `comp` at p's parameter (its foot on a line; near a conic, close
