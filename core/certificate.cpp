@@ -27,16 +27,24 @@ std::string format_g17(double v) {
 // that point: each triangle is taken relative to `origin` (an input point), so the result is off
 // by rounding relative to the distances involved, not to the coordinates' magnitude (which would
 // be an ulp of 1e6 for a mesh of size 1 far from the origin). The grid's nearest point to the
-// rounded sum bounds which triangles can be nearest; `to_point` is the nearest point.
-double witness_distance(const MeshGrid& grid, const Vec3& origin, const Vec3& offset, Vec3& to_point) {
+// rounded sum bounds which triangles can be nearest; `to_point` is the nearest point. `distance`
+// is the search's evaluation (closest_point_on_triangle), `lower` each triangle's distance taken
+// from below: the search's may be too far by a sliver's height (generate_pairs3.py "sliver" 12014:
+// a source 3.3e-12 high taken as its edges, the lower end 1.6e-12 where the distance is 6.3e-13).
+struct Witness { double distance = HUGE_VAL, lower = HUGE_VAL; Vec3 to_point; };
+Witness witness_distance(const MeshGrid& grid, const Vec3& origin, const Vec3& offset) {
+    Witness w;
     const Vec3 p = origin + offset;
     const MeshGrid::Nearest q = grid.nearest(p);
-    to_point = q.point;
-    if (q.triangle == UINT32_MAX) return HUGE_VAL;
+    w.to_point = q.point;
+    if (q.triangle == UINT32_MAX) return w;
     // |p - (origin + offset)| <= half an ulp per axis; triangles farther than d0 + 2 eps from p
     // are farther from the exact point than the one found.
     const double eps = 0x1p-53 * (std::fabs(p.x) + std::fabs(p.y) + std::fabs(p.z)) * (1 + 1e-9);
-    return grid.distance_relative(origin, offset, (std::sqrt(q.dist2) + 3 * eps) * (1 + 1e-12));
+    const double reach = (std::sqrt(q.dist2) + 3 * eps) * (1 + 1e-12);
+    w.distance = grid.distance_relative(origin, offset, reach);
+    w.lower = grid.distance_lower_relative(origin, offset, reach);
+    return w;
 }
 
 // The witness: the largest exact value, the lowest index among equals. Returns its square, or -1
@@ -68,11 +76,10 @@ double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const 
     const Vec2 w = tab.where[r.target];
     r.from_point = frame.to_world(w);
     const Vec3 offset = (w.x * frame.scale) * frame.e1 + (w.y * frame.scale) * frame.e2;
-    Vec3 to_point;
-    const double d_witness = witness_distance(grid.of(1 - side), frame.origin, offset, to_point);
-    r.to_point = to_point;
+    const Witness wd = witness_distance(grid.of(1 - side), frame.origin, offset);
+    r.to_point = wd.to_point;
     // (A sliver target's witness may lie off the sliver by up to its height, its slack.)
-    return std::max(0.0, std::min(r.distance, d_witness - tab.slack[r.target] - witness_rounding(d_witness, box)));
+    return std::max(0.0, std::min(r.distance, wd.lower - tab.slack[r.target] - witness_rounding(wd.lower, box)));
 }
 
 // upper: what the confirmation of the top left (confirm_top.cpp: a bound without the domain
@@ -166,15 +173,14 @@ void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode,
     bool raised = top.raised;
     if (!raised) raised = polish_ties(grid, side, tab, n, r.distance, tol, coord, origin, offset, raised_target);
     if (raised) {
-        Vec3 to_point;
-        const double d = witness_distance(grid.of(1 - side), origin, offset, to_point);
-        const double lower = d - witness_rounding(d, box);
-        if (lower > r.lower) {
+        const Witness wd = witness_distance(grid.of(1 - side), origin, offset);
+        const double lower = wd.lower - witness_rounding(wd.lower, box);
+        if (lower > r.lower && wd.distance >= r.distance) {
             r.target = raised_target;
-            r.distance = d;
-            r.lower = std::min(d, lower);
+            r.distance = wd.distance;
+            r.lower = std::min(wd.distance, lower);
             r.from_point = origin + offset;
-            r.to_point = to_point;
+            r.to_point = wd.to_point;
         }
     }
     r.upper = upper_end(top, r.distance, coord, box);

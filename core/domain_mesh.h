@@ -254,6 +254,7 @@ private:
     template <class Fn> void for_each_half_edge(int f, Fn&& fn) const;  // in face_half_edges() order
     void collect_half_edges(int f, std::vector<int>& out) const;
     bool near_arc(int h, Vec2 p, double tol) const;  // p within tol of half-edge h's arc
+    bool beside_tiny_sliver(int e, Vec2 p) const;    // another arc of e's faces within kTinyChord of p
 
     // The clipping primitive (domain_split.cpp): split_face_into runs these steps on one SplitCall.
     struct SplitCall;

@@ -1,5 +1,8 @@
 #include "point_triangle.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace hlens {
 
 ClosestPoint closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
@@ -74,6 +77,51 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a0, const Vec3
 bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, ClosestPoint& out) {
     const Vec3* r[3];
     return face_foot(p, a, b, c, out, r) == Foot::Inside;
+}
+
+double triangle_distance_lower(const Vec3& p, const Vec3& a0, const Vec3& b0, const Vec3& c0) {
+    using LD = long double;
+    struct V {
+        LD x, y, z;
+        V operator-(const V& o) const { return {x - o.x, y - o.y, z - o.z}; }
+        V operator*(LD s) const { return {x * s, y * s, z * s}; }
+    };
+    auto dot = [](const V& u, const V& v) { return u.x * v.x + u.y * v.y + u.z * v.z; };
+    // Differences of doubles, exact in long double's 64 bits unless their exponents differ by more
+    // than 11 (then to 2^-64 of the larger, which the allowances below cover).
+    auto sub = [](const Vec3& u, const Vec3& v) { return V{(LD)u.x - v.x, (LD)u.y - v.y, (LD)u.z - v.z}; };
+    const double edges = std::sqrt(min_over_edges(p, a0, b0, c0).dist2);
+    const Vec3 *a = &a0, *b = &b0, *c = &c0;  // a -> b the longest edge, as face_foot has it
+    const double lab = norm2(b0 - a0), lbc = norm2(c0 - b0), lca = norm2(a0 - c0);
+    if (lbc >= lab && lbc >= lca) { a = &b0; b = &c0; c = &a0; }
+    else if (lca >= lab && lca >= lbc) { a = &c0; b = &a0; c = &b0; }
+    const V e = sub(*b, *a), f = sub(*c, *a), w = sub(p, *a);
+    const LD L2 = dot(e, e);
+    if (L2 == 0) return edges;  // one point
+    V g = f - e * (dot(f, e) / L2);
+    g = g - e * (dot(g, e) / L2);
+    const LD L = std::sqrt(L2), H = std::sqrt(dot(g, g)), W = std::sqrt(dot(w, w));
+    const LD ulp = 0x1p-63L * (L + W);  // the rounding of the differences and of g, absolute
+    // Every point of the triangle lies within H of its longest edge (the opposite corner's foot is
+    // on that edge: the angles beside the longest edge are not obtuse): one bound, loose by H.
+    const double near_edge = std::max(0.0L, edges - H - 4 * ulp);
+    if (!(H > 1e-30L * L)) return near_edge;
+    const V ue = e * (1 / L), ug = g * (1 / H);
+    const V n{ue.y * ug.z - ue.z * ug.y, ue.z * ug.x - ue.x * ug.z, ue.x * ug.y - ue.y * ug.x};
+    const LD x = dot(w, ue), y = dot(w, ug), z = std::fabs(dot(w, n));
+    const LD bx = L, cx = dot(f, ue), cy = dot(f, ug);  // a = (0,0), b = (bx,0), c = (cx,cy), cy > 0
+    // The foot's signed distances inside the three edges' lines. g's direction is off by up to
+    // ~ulp / H, which moves the foot by that times |w|: within `margin` of an edge it may lie on
+    // either side.
+    const LD s0 = y, s1 = ((cx - bx) * y - cy * (x - bx)) / std::hypot(cx - bx, cy),
+             s2 = (cx * (cy - y) - cy * (cx - x)) / std::hypot(cx, cy);
+    const LD margin = 64 * ulp * (W + L) / H + 64 * ulp;
+    if (std::min({s0, s1, s2}) <= -margin) return edges;  // outside: the nearest point is on an edge
+    // The true distance is the plane's (the foot inside: then the plane's normal, off by ~ulp / H
+    // about the longest edge, moves z by that times the foot's height over it, <= H) or the edges'.
+    // The lesser of the two is a bound, and so is near_edge: the larger of these.
+    const double plane = std::max(0.0L, z - 8 * ulp);
+    return std::max(std::min(plane, edges), near_edge);
 }
 
 }  // namespace hlens

@@ -20,4 +20,13 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
 // closest point is on the boundary or the triangle has no height (the caller then takes the edges).
 bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, ClosestPoint& out);
 
+// A distance from p to the closed triangle abc that the true one is never below (but for a few
+// ulps of |p - a| and the edges), for the certified interval's lower end. closest_point_on_triangle
+// takes a triangle of height <= 1e-12 of its longest edge as its edges, which is up to that height
+// too far, and near a sliver's edge its double-precision foot test may err either way. Here the
+// plane is built in long double; where the foot is not clearly outside, the lesser of the plane's
+// and the edges' distances is taken (the truth is one of them), or the edges' less the height if
+// that is more. Slower than closest_point_on_triangle: for a few points, not a search.
+double triangle_distance_lower(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
 }  // namespace hlens

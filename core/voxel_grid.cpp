@@ -184,6 +184,19 @@ std::vector<size_t> MeshGrid::voxels_of_triangle(const std::array<Vec3, 3>& corn
 // best and the closures that test a voxel and a triangle against it; split, they would pass that
 // state around on every call.
 double MeshGrid::distance_relative(const Vec3& origin, const Vec3& offset, double reach, uint32_t* triangle) const {
+    return least_within(origin, offset, reach, triangle, [](const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+        return std::sqrt(closest_point_on_triangle(p, a, b, c).dist2);
+    });
+}
+
+double MeshGrid::distance_lower_relative(const Vec3& origin, const Vec3& offset, double reach) const {
+    return least_within(origin, offset, reach, nullptr, triangle_distance_lower);
+}
+
+// The least of dist(offset, corners - origin) over the triangles whose box lies within `reach` of
+// origin + offset (distance_relative).
+template <class Dist>
+double MeshGrid::least_within(const Vec3& origin, const Vec3& offset, double reach, uint32_t* triangle, Dist dist) const {
     const TriangleMesh& m = *mesh_;
     const Vec3 w = origin + offset;
     double best = HUGE_VAL;
@@ -193,7 +206,7 @@ double MeshGrid::distance_relative(const Vec3& origin, const Vec3& offset, doubl
         if (!(point_box_distance2(w, tb.lo, tb.hi) <= reach * reach)) return;
         const auto c = m.corners(t);
         // Compared as distances: triangles whose squared distances differ in the last bit may tie.
-        const double d = std::sqrt(closest_point_on_triangle(offset, c[0] - origin, c[1] - origin, c[2] - origin).dist2);
+        const double d = dist(offset, c[0] - origin, c[1] - origin, c[2] - origin);
         if (d < best || (d == best && t < at)) best = d, at = t;
     };
     // The voxels the ball touches hold every triangle within reach; far from the mesh a scan of

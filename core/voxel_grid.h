@@ -73,10 +73,14 @@ public:
     // distance there plus how far the rounding moved the point). `triangle` (if given): the one at
     // that distance, the lowest index among equals. +inf if no triangle is within reach.
     double distance_relative(const Vec3& origin, const Vec3& offset, double reach, uint32_t* triangle = nullptr) const;
+    // The same with each triangle's distance taken from below (triangle_distance_lower): a value
+    // the true distance is never under, but for its rounding (the certified interval's lower end).
+    double distance_lower_relative(const Vec3& origin, const Vec3& offset, double reach) const;
 
     const TriangleMesh& mesh() const { return *mesh_; }
 
 private:
+    template <class Dist> double least_within(const Vec3& origin, const Vec3& offset, double reach, uint32_t* triangle, Dist dist) const;
     template <class F> void for_each_voxel_of(const std::array<Vec3, 3>& corners, F&& f) const;
     const TriangleMesh* mesh_;
     double margin_ = 0;

@@ -1162,3 +1162,103 @@ TEST(Degenerate, ClosedChordInsideAFaceIsAHoleOfIt) {
     const double d2 = ts.direct_d2(p);
     EXPECT_NEAR(ts.domain_mesh()->faces()[f].poly(p), d2, 1e-7 * d2);
 }
+
+// Generate_pairs.py "sliver" 37698, the paper's order: a strip of needles 2e-8 wide and 2e4 long
+// (1e-13 of T' across), under a target 4.6e4 across. Where a needle's corner is nearer than its
+// neighbour's edge, g is a parabola 1e12 times longer than wide, lying along a region line: its tip
+// is where rounding puts it, and a chord ended at a vertex 2e-5 from the tip (kFlatTip) started
+// its arc at the tip. The lens between that arc and the region line, 4e-10 wide, left a gap of 2e-5
+// between its line and its arc, and the ray test, blind to the gap, counted a point 7e-6 outside
+// the corner's region as inside the lens: validate() held the corner's quadratic there, 18% above
+// d^2 (the edge's). The loop is closed by straight connectors from a vertex to its arc's end.
+TEST(Degenerate, ArcStartingAtAFlatTipIsJoinedToItsVertex) {
+    const TriangleMesh A = make_mesh({{6002.4901253876633, -165.45065957926636, 17424.678027266717},
+                                      {2353.8443716082593, -1899.4604081437196, 16748.061181990928},
+                                      {-1294.8013821711461, -3633.470156708172, 16071.44433671514},
+                                      {-4943.4471359505505, -5367.4799052726248, 15394.82749143935},
+                                      {-8592.0928897299564, -7101.4896538370785, 14718.210646163559},
+                                      {6002.4901253862026, -165.45065958345549, 17424.678027285336},
+                                      {2353.8443716067977, -1899.4604081479088, 16748.061182009544},
+                                      {-1294.8013821726076, -3633.4701567123616, 16071.444336733757},
+                                      {-4943.4471359520121, -5367.4799052768149, 15394.827491457965},
+                                      {-8592.092889731417, -7101.4896538412677, 14718.210646182179},
+                                      {-427.67077866460386, 2652.7005376999682, 14306.205587334141},
+                                      {4031.1413443020792, 16818.008945456964, 11800.121318497615},
+                                      {-941.40647467992653, 1738.7396539674926, 10327.494864908991}},
+                                     {{0, 1, 5}, {1, 6, 5}, {1, 2, 6}, {2, 7, 6}, {2, 3, 8}, {2, 8, 7},
+                                      {3, 4, 8}, {4, 9, 8}, {10, 11, 12}});
+    const TriangleMesh B = make_mesh({{-3990.2578466429586, -20.828886543856697, -10876.356764780643},
+                                      {-15126.370766191339, -11021.839179125574, 17910.907530139411},
+                                      {11970.773539928876, 62.486659631571456, 32629.070294341931},
+                                      {23106.886459477257, 11063.496952213289, 3841.8059994218765}},
+                                     {{0, 1, 2}, {0, 2, 3}});
+    const VoxelGrid grid(A, B, 1.0, 1);
+    TargetSolver ts(grid, 1, 0);
+    ts.on_event([](const Event&) {});  // the paper's insertion
+    while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
+    const Vec2 p{0.393265209, 0.087352548};  // 7.2e-6 outside the corner's region, in its edge's
+    const DomainMesh& dm = *ts.domain_mesh();
+    const int f = dm.face_at(p);
+    ASSERT_GT(f, 0);
+    const double d2 = ts.direct_d2(p);
+    EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-3 * d2);
+    EXPECT_NE(dm.faces()[f].label.region, Region::b);
+}
+
+// Generate_pairs3.py "sliver" 11734, the paper's order: needles along the diagonal of a grid, in
+// its plane. One needle's corner region is a wedge 5e-7 wide per unit of length; the next needle's
+// region line crosses it where it is 3e-12 wide, less than a chord the splits insert (kTinyChord),
+// so the wedge's tip beyond the line, 5.4e-6 long, stays with the rest of the wedge, in the edge
+// region above the line, d^2 7e-12 by its polynomial beside 0 across its side. validate() took
+// that for a jump of d^2; it now allows it across a sliver thinner than kTinyChord. Just beside
+// the tip, d^2 is that of the needle, 0.
+TEST(Degenerate, WedgeTipThinnerThanATinyChordIsNoJump) {
+    const TriangleMesh A = make_mesh({{-1.5, -1.5, 0}, {-1.5, 0, 0}, {-1.5, 1.5, 0}, {0, -1.5, 0}, {0, 0, 0},
+                                      {0, 1.5, 0}, {1.5, -1.5, 0}, {1.5, 0, 0}, {1.5, 1.5, 0}},
+                                     {{0, 3, 4}, {0, 4, 1}, {1, 4, 5}, {1, 5, 2}, {3, 6, 7}, {3, 7, 4}, {4, 7, 8}, {4, 8, 5}});
+    const TriangleMesh B = make_mesh({{0, 0, 0},
+                                      {1, 1, 0},
+                                      {0.38210877907368773, 0.38210877906375, 0},
+                                      {0.7017347063417019, 0.7017347063417236, 0},
+                                      {0.029043409911972455, 0.029043385798283756, 0},
+                                      {0.41381438612549937, 0.41381464655259814, 0},
+                                      {0.020503854359354236, 0.02052434414555545, 0},
+                                      {0.6318550271430906, 0.6318800980632672, 0},
+                                      {0.8926045735172259, 0.8926045733801282, 0},
+                                      {0.8941192965616946, 0.8941192965620128, 0},
+                                      {0.9612102026235669, 0.9612102025758433, 0},
+                                      {0.048774945938697946, 0.048774986367953375, 0}},
+                                     {{5, 0, 1}, {7, 0, 1}, {1, 8, 0}, {3, 0, 1}, {9, 0, 1}, {0, 1, 6},
+                                      {4, 0, 1}, {2, 0, 1}, {0, 1, 10}, {1, 11, 0}});
+    const VoxelGrid grid(A, B, 1.0, 1);
+    TargetSolver ts(grid, 0, 7);
+    ts.on_event([](const Event&) {});  // the paper's insertion
+    while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
+    const DomainMesh& dm = *ts.domain_mesh();
+    for (double y : {1e-6, 3e-6, 5e-6})
+        for (double x : {0.2758763432, 0.2758763452}) {  // 1e-9 either side of the tip
+            const Vec2 p{x, y};
+            const int f = dm.face_at(p);
+            ASSERT_GT(f, 0);
+            EXPECT_NEAR(dm.faces()[f].poly(p), ts.direct_d2(p), 1e-14) << x << " " << y;
+        }
+}
+
+// Generate_pairs3.py "sliver" 12014 in a hand case: a target 2e-13 across over the middle of a
+// source 9e-13 high, so every point of the target lies over the source's face. The distance is the
+// height of its top corner, 2e-13. The search takes a triangle that thin as its edges (4.9e-13
+// from that corner), and the lower end, from the witness's distance by the same evaluation, was
+// above the truth: it now takes each triangle's distance from below (triangle_distance_lower).
+TEST(Degenerate, LowerEndHoldsOverASourceTakenAsItsEdges) {
+    const TriangleMesh A = make_mesh({{0.5 - 1e-13, 3e-13, 1e-13}, {0.5 + 1e-13, 3e-13, 1e-13}, {0.5, 4.5e-13, 2e-13}}, {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0, 0, 0}, {1, 0, 0}, {0.5, 9e-13, 0}}, {{0, 1, 2}});
+    const VoxelGrid grid(A, B);
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        HausdorffOptions opt;
+        opt.mode = mode;
+        const OneSidedResult r = one_sided(grid, 0, opt);
+        EXPECT_LE(r.lower, 2e-13) << mode_name(mode);
+        EXPECT_GE(r.upper, 2e-13) << mode_name(mode);
+        EXPECT_LE(r.lower, r.distance) << mode_name(mode);
+    }
+}

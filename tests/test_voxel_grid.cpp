@@ -562,3 +562,36 @@ TEST(VoxelGrid, MeshesFarApartKeepTheirOwnVoxels) {
     check_nearest(g, 1, 100, 18);
     check_nearest(g, 0, 100, 19);
 }
+
+// triangle_distance_lower on slivers in the plane z = 0 (a = 0, b = (1,0,0), c = (t, h, 0)), where
+// the truth is exact: |z| where p's foot lies in the triangle (2D orientation tests, exact for these
+// coordinates to far below h), else the distance to the nearest edge. The bound is never above the
+// truth and never below it by more than the height.
+TEST(PointTriangle, LowerBoundHoldsOnSlivers) {
+    // The hand case behind it: a foot inside a sliver 9e-13 high, which closest_point_on_triangle
+    // takes as its edges, 4.9e-13 where the distance is 2e-13.
+    const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0.5, 9e-13, 0}, q{0.5, 4.5e-13, 2e-13};
+    EXPECT_GT(std::sqrt(closest_point_on_triangle(q, a, b, c).dist2), 4.9e-13);
+    EXPECT_LE(triangle_distance_lower(q, a, b, c), 2e-13);
+    EXPECT_GE(triangle_distance_lower(q, a, b, c), 2e-13 - 9e-13);
+    std::mt19937 g(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    for (double h : {1e-15, 1e-13, 9e-13, 1e-11, 1e-9, 1e-6, 1e-3}) {
+        for (int it = 0; it < 400; ++it) {
+            const double t = 0.2 + 0.6 * u(g);
+            const Vec3 c2{t, h, 0};
+            const double x = -0.1 + 1.2 * u(g), y = h * (-2 + 5 * u(g));
+            const double zs[] = {0, 1e-15, 1e-13, 1e-9, 1e-3, 0.5};
+            const double z = zs[it % 6] * (u(g) < 0.5 ? -1 : 1);
+            const Vec3 p{x, y, z};
+            using LD = long double;
+            auto side = [](LD ax, LD ay, LD bx, LD by, LD px, LD py) { return (bx - ax) * (py - ay) - (by - ay) * (px - ax); };
+            const bool inside = side(0, 0, 1, 0, x, y) >= 0 && side(1, 0, t, h, x, y) >= 0 && side(t, h, 0, 0, x, y) >= 0;
+            const double truth = inside ? std::fabs(z) : std::sqrt(std::min({seg_dist2(p, a, b), seg_dist2(p, b, c2), seg_dist2(p, c2, a)}));
+            const double lower = triangle_distance_lower(p, a, b, c2);
+            SCOPED_TRACE(testing::Message() << "h " << h << " p " << x << " " << y << " " << z << " truth " << truth);
+            EXPECT_LE(lower, truth * (1 + 1e-14) + 1e-30);
+            EXPECT_GE(lower, truth - h - 1e-15 * (1 + std::fabs(z)));
+        }
+    }
+}
