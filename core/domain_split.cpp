@@ -29,6 +29,7 @@ constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
 // there rounding moves roots by up to 1e-5 ("mirror" 7242), far more than kOffCurve.
 constexpr double kFlatTip = 1e-4;
 constexpr double kTwoPi = 6.283185307179586;
+constexpr double kNearlyFull = 1e-4;  // radians short of a whole turn (find_wedge)
 
 // How far p is from the point of `comp` at p's parameter (its foot on a line; near a conic, close
 // to its distance from it).
@@ -109,8 +110,15 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
             double rd = wrap2pi(ad - ao), rb = wrap2pi(ab - ao);
             // Out and back along one direction: the whole turn at the tip of a dangling arc, but
             // between two arcs a tangential tie that only the secants (pass 1) can order (a chord
-            // ending where it touches the boundary: pinches_face).
-            if (pass == 0 && hout != (hin ^ 1) && (rb <= 1e-12 || rb >= kTwoPi - 1e-12)) continue;
+            // ending where it touches the boundary: pinches_face). So is a wedge all but the whole
+            // turn (kNearlyFull short of it): two arcs leaving v within that angle whose tangents'
+            // order may be rounding. (Generate_pairs.py "zeroarea" 42181, nearest first: a region
+            // line passing 7.7e-10 from a vertex where the face's boundary runs along it, two
+            // chords ending there; the first chord's tangent came out 2.9e-5 rad on the far side
+            // of a curved boundary arc's, the wedge between them read as 2 pi less 2.9e-5 and took
+            // the second chord, which left one piece where there were three, and a strip 1.4e-5
+            // wide where a source's face was nearer kept the farther one, d^2 70% above.)
+            if (pass == 0 && hout != (hin ^ 1) && (rb <= 1e-12 || rb >= kTwoPi - kNearlyFull)) continue;
             if (rb == 0) rb = kTwoPi;
             if (rd > 1e-12 && rd < rb - 1e-12) return hin;
         }
@@ -362,10 +370,18 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
     out.clear();
     double gs = g_in.scale();
     if (!(gs > 0)) { out.push_back({f, 0}); return; }
-    const Quadratic2 g = g_in * (1.0 / gs);
+    Quadratic2 g = g_in * (1.0 / gs);
     {
         // Most faces lie wholly on one side: a conservative bound over the face's box says so.
         Box2 b = cached_face_box(f);
+        // A quadratic part that moves g by less than a thousandth of kZero anywhere on the face is
+        // rounding of a difference of quadratics with one quadratic part (two parallel edges', two
+        // planes'): the curve is the line of the rest. Kept, it made an ellipse 1e10 across whose
+        // points, an ulp of 1e10 off, missed a face 1e-5 across, and no chord was found
+        // (generate_pairs3.py "coinc_retri_far" 13964, nearest first: a strip 2e-6 wide where a
+        // parallel edge is nearer kept the farther one, d^2 2.3 times the truth).
+        const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
+        if ((std::fabs(g.a) + 2 * std::fabs(g.b) + std::fabs(g.c)) * m * m <= 1e-3 * kZero) g.a = g.b = g.c = 0;
         Interval r = g.range(b.lo, b.hi);
         if (r.lo > kZero) { out.push_back({f, 1}); return; }
         if (r.hi < -kZero) { out.push_back({f, -1}); return; }

@@ -110,16 +110,17 @@ double triangle_distance_lower(const Vec3& p, const Vec3& a0, const Vec3& b0, co
     const V n{ue.y * ug.z - ue.z * ug.y, ue.z * ug.x - ue.x * ug.z, ue.x * ug.y - ue.y * ug.x};
     const LD x = dot(w, ue), y = dot(w, ug), z = std::fabs(dot(w, n));
     const LD bx = L, cx = dot(f, ue), cy = dot(f, ug);  // a = (0,0), b = (bx,0), c = (cx,cy), cy > 0
-    // The foot's signed distances inside the three edges' lines. g's direction is off by up to
-    // ~ulp / H, which moves the foot by that times |w|: within `margin` of an edge it may lie on
-    // either side.
+    // The foot's signed distances inside the three edges' lines. The frame (ue, ug, n) is
+    // orthonormal to an ulp, and the coordinates of b, c and p in it are those of a triangle and a
+    // point moved by a few ulps of the sizes, however thin the triangle (g's direction may be off
+    // by ulp / H, but the corners' and p's coordinates are taken in the same frame): the decision
+    // is that triangle's, within `margin` of an edge either side's.
     const LD s0 = y, s1 = ((cx - bx) * y - cy * (x - bx)) / std::hypot(cx - bx, cy),
              s2 = (cx * (cy - y) - cy * (cx - x)) / std::hypot(cx, cy);
-    const LD margin = 64 * ulp * (W + L) / H + 64 * ulp;
+    const LD margin = 16 * ulp;
     if (std::min({s0, s1, s2}) <= -margin) return edges;  // outside: the nearest point is on an edge
-    // The true distance is the plane's (the foot inside: then the plane's normal, off by ~ulp / H
-    // about the longest edge, moves z by that times the foot's height over it, <= H) or the edges'.
-    // The lesser of the two is a bound, and so is near_edge: the larger of these.
+    // The true distance is the plane's (the foot inside) or the edges'. The lesser of the two is a
+    // bound, and so is near_edge: the larger of these.
     const double plane = std::max(0.0L, z - 8 * ulp);
     return std::max(std::min(plane, edges), near_edge);
 }

@@ -23,10 +23,10 @@ bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec
 // A distance from p to the closed triangle abc that the true one is never below (but for a few
 // ulps of |p - a| and the edges), for the certified interval's lower end. closest_point_on_triangle
 // takes a triangle of height <= 1e-12 of its longest edge as its edges, which is up to that height
-// too far, and near a sliver's edge its double-precision foot test may err either way. Here the
-// plane is built in long double; where the foot is not clearly outside, the lesser of the plane's
-// and the edges' distances is taken (the truth is one of them), or the edges' less the height if
-// that is more. Slower than closest_point_on_triangle: for a few points, not a search.
+// too far. Here the plane is built in long double for any height; where the foot is not clearly
+// outside (to a generous bound of its rounding), the lesser of the plane's and the edges' distances
+// is taken (the truth is one of them), or the edges' less the height if that is more. Slower than
+// closest_point_on_triangle: for a few points, not a search.
 double triangle_distance_lower(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace hlens

@@ -566,7 +566,7 @@ TEST(VoxelGrid, MeshesFarApartKeepTheirOwnVoxels) {
 // triangle_distance_lower on slivers in the plane z = 0 (a = 0, b = (1,0,0), c = (t, h, 0)), where
 // the truth is exact: |z| where p's foot lies in the triangle (2D orientation tests, exact for these
 // coordinates to far below h), else the distance to the nearest edge. The bound is never above the
-// truth and never below it by more than the height.
+// truth (but for a few ulps of the sizes) and never below it by more than the height.
 TEST(PointTriangle, LowerBoundHoldsOnSlivers) {
     // The hand case behind it: a foot inside a sliver 9e-13 high, which closest_point_on_triangle
     // takes as its edges, 4.9e-13 where the distance is 2e-13.
@@ -590,8 +590,68 @@ TEST(PointTriangle, LowerBoundHoldsOnSlivers) {
             const double truth = inside ? std::fabs(z) : std::sqrt(std::min({seg_dist2(p, a, b), seg_dist2(p, b, c2), seg_dist2(p, c2, a)}));
             const double lower = triangle_distance_lower(p, a, b, c2);
             SCOPED_TRACE(testing::Message() << "h " << h << " p " << x << " " << y << " " << z << " truth " << truth);
-            EXPECT_LE(lower, truth * (1 + 1e-14) + 1e-30);
+            EXPECT_LE(lower, truth + 1e-15);  // a few ulps of the sizes (1), as the edges' distances have
             EXPECT_GE(lower, truth - h - 1e-15 * (1 + std::fabs(z)));
         }
     }
 }
+
+#if defined(__SIZEOF_FLOAT128__)
+// Thin triangles turned every way, against a truth in quad precision (__float128, 113 bits: the
+// barycentric solve loses (L / h)^2, at most 1e22 here, and keeps 1e-12). Points lie near the
+// longest edge, off the plane by up to the edge's length or by almost nothing. Above the height
+// at which it takes a triangle as its edges, closest_point_on_triangle is accurate to a few ulps
+// of the sizes (its plane from the longest edge and the re-orthogonalised height: the rounding
+// is that of a triangle moved by an ulp); triangle_distance_lower is never above the truth and,
+// near a thin triangle's plane, below it by no more than its margin.
+TEST(PointTriangle, ThinTrianglesAgreeWithQuadPrecision) {
+    using Q = __float128;
+    struct QV { Q x, y, z; };
+    auto qv = [](const Vec3& a) { return QV{a.x, a.y, a.z}; };
+    auto sub = [](QV a, QV b) { return QV{a.x - b.x, a.y - b.y, a.z - b.z}; };
+    auto dotq = [](QV a, QV b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
+    auto seg = [&](QV p, QV a, QV b) {
+        const QV d = sub(b, a), w = sub(p, a);
+        const Q l = dotq(d, d);
+        Q t = l > 0 ? dotq(w, d) / l : 0;
+        t = t < 0 ? 0 : (t > 1 ? 1 : t);
+        const QV r{w.x - t * d.x, w.y - t * d.y, w.z - t * d.z};
+        return dotq(r, r);
+    };
+    auto truth2 = [&](const Vec3& P, const Vec3& A, const Vec3& B, const Vec3& C) {
+        const QV p = qv(P), a = qv(A), b = qv(B), c = qv(C), e = sub(b, a), f = sub(c, a), w = sub(p, a);
+        const Q ee = dotq(e, e), ef = dotq(e, f), ff = dotq(f, f), we = dotq(w, e), wf = dotq(w, f), det = ee * ff - ef * ef;
+        Q best = seg(p, a, b);
+        best = std::min(best, seg(p, b, c));
+        best = std::min(best, seg(p, c, a));
+        if (det > 0) {
+            const Q u = (we * ff - wf * ef) / det, v = (wf * ee - we * ef) / det;
+            if (u >= 0 && v >= 0 && u + v <= 1) {
+                const QV r{w.x - u * e.x - v * f.x, w.y - u * e.y - v * f.y, w.z - u * e.z - v * f.z};
+                best = std::min(best, dotq(r, r));
+            }
+        }
+        return (double)best;
+    };
+    std::mt19937 g(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int it = 0; it < 6000; ++it) {
+        const double hl = std::pow(10.0, -11 + it % 6);  // height / length, 1e-11 .. 1e-6
+        const Vec3 a = rnd(g, -1, 1), d = rnd(g, -1, 1), m = rnd(g, -1, 1), b = a + d;
+        const double L = norm(d);
+        Vec3 n = cross(d, m);
+        n = n / norm(n);
+        Vec3 side = cross(n, d);
+        side = side / norm(side);
+        const Vec3 c = a + d * (0.3 + 0.2 * (u(g) + 1)) + side * (hl * L);
+        const double z = it % 2 ? u(g) * L : u(g) * 1e-9 * L;
+        const Vec3 p = a + d * (0.2 + 0.3 * (u(g) + 1)) + side * (u(g) * 1e-6 * L) + n * z;
+        const double truth = std::sqrt(truth2(p, a, b, c)), size = L + norm(p - a);
+        SCOPED_TRACE(testing::Message() << "h/L " << hl << " truth " << truth);
+        EXPECT_NEAR(std::sqrt(closest_point_on_triangle(p, a, b, c).dist2), truth, 1e-15 * size);
+        const double lower = triangle_distance_lower(p, a, b, c);
+        EXPECT_LE(lower, truth + 1e-15 * size);
+        EXPECT_GE(lower, truth - 1e-10 * size);
+    }
+}
+#endif
