@@ -354,6 +354,8 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
         return d > r && (d - r) * (d - r) > F.max_value * (1 + 1e-9);
     };
     const bool changed = mesh_->insert(proj, cull, watching() ? &L : nullptr);
+    for (int k = 0; k < 3; ++k)
+        corner_d2_[k] = std::min(corner_d2_[k], source_distance2(frame_, sc, mesh_->vertices()[k].p));
     if (validate_each_) {
         std::string msg = validate(validate_thorough_);
         if (!msg.empty()) throw std::logic_error("target " + std::to_string(target_) + ", after source " + std::to_string(s) + ": " + msg);
@@ -366,7 +368,16 @@ void TargetSolver::update_maximum() {
     mesh_->update_maxima(candidates_);  // reuses the vector's storage
     double best = -HUGE_VAL;
     Vec2 where;
-    for (const Candidate& c : candidates_) {
+    for (const Candidate& cand : candidates_) {
+        // At a corner of T' the value is held to d^2 there, evaluated directly: a corner of a thin
+        // T' (a sliver target, or a piece of one, in fast mode) may lie in the tip of a domain whose
+        // region line crossed T' where it was thinner than a chord the splits insert (kTinyChord),
+        // and keeps that domain's polynomial beyond its region, below d^2. Generate_pairs3.py "sliver"
+        // 14674: a piece 1.8e-7 tall whose tip 4.3e-5 long kept an edge's polynomial, 8.6e-11 where
+        // d^2 is 1.9e-9; the piece stopped below L and fast mode left its target, which held
+        // paper mode's witness, to the confirmation (a witness an ulp away, 1.9e-17 apart).
+        Candidate c = cand;
+        if (c.vertex >= 0 && c.vertex < 3) c.value = std::max(c.value, corner_d2_[c.vertex]);
         if (watching() && c.edge >= 0) {
             Event e = make_event(EventKind::ArcMaximum);
             e.face = -1; e.other = c.edge; e.point = c.p; e.world = frame_.to_world(c.p); e.value = c.value * sc2;

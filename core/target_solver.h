@@ -194,6 +194,9 @@ private:
     std::unique_ptr<Seen> seen_;
 
     double max_sq_ = HUGE_VAL;        // world units
+    // d^2 at T''s corners (the domain mesh's vertices 0-2), exact over the inserted sources (frame
+    // units): update_maximum holds a corner's candidate to it (see there).
+    double corner_d2_[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
     Vec2 max_2d_;
     Vec3 max_world_;
     double stop_below_ = -1;

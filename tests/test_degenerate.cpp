@@ -1349,3 +1349,51 @@ TEST(Degenerate, QuadraticPartBelowRoundingLeavesTheLine) {
     ts.nearest_first();
     while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
 }
+
+// Generate_pairs3.py "sliver" 14674: needles in one plane against a copy jittered by 3e-6. Fast
+// mode cut a needle target into pieces; the piece at its far corner is 1.8e-7 tall for its length,
+// and the nearest source's region line crossed it 4.3e-5 before the corner, where it was 7.7e-12
+// wide: no chord (kTinyChord), so the tip kept the source edge's polynomial, 8.6e-11 (frame units)
+// where d^2 is 1.9e-9. The piece's maximum, from that polynomial, was below L, it stopped early,
+// and the target holding paper mode's witness (that corner) was left to the confirmation: fast
+// mode's distance came out 1.9e-17 below paper mode's. A corner's candidate is now held to d^2
+// there. The corner's distance, 2.716004291271859e-06, is exact rational arithmetic on the inputs.
+TEST(Degenerate, CornerOfAThinPieceIsHeldToItsDistance) {
+    const TriangleMesh A = make_mesh(
+        {{0.932623493553276, -0.40884791214729277, 0}, {0.013636429420541774, -0.8031355938680103, 0}, {3.253252020977896, 0.5868083660268099, 0},
+         {0.9088345546458734, 0.9341973626464439, 0}, {1.8576341684791804, 0.6183187581323558, 0}, {1.0812086212365704, 0.8768107113858713, 0},
+         {-0.016109316400517937, -0.4527482771182241, 0}, {0.42362205524627095, 0.4453810681264537, 0}, {0.42362205521944674, 0.4453810681395871, 0},
+         {0.7642713373940555, 0.026658595103773663, 0}, {-0.06686042347935328, -0.5294169357977998, 0}, {2.6799699786370725, 1.3083725051305335, 0},
+         {-0.7843953175733009, 0.9938174030700186, 0}, {-1.0688346138745786, 1.9525114557894638, 0}, {-1.05125435455571, 1.89325724996151, 0},
+         {-0.9835874236347761, 0.10431586759463096, 0}, {-0.13167915800232322, 0.6280069090943936, 0}, {-0.13167894322363805, 0.6280072547585518, 0},
+         {-0.2811766024751421, -0.21728645350307163, 0}, {-0.8575447795580936, -1.0344765932172484, 0}, {-0.8575447795325128, -1.0344765932352904, 0}},
+        {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 17}, {18, 19, 20}});
+    const TriangleMesh B = make_mesh(
+        {{0.4236229414988239, 0.4453817311251068, 0}, {-0.7843937754368747, 0.9938164072760267, 0}, {0.7642731918993251, 0.02665682855620675, 0},
+         {0.9326233528852366, -0.40884623774293943, 0}, {-0.8575438510363179, -1.034475578416756, 0}, {0.4236225080536916, 0.4453791652819478, 0},
+         {-0.8575466330370093, -1.0344781583030893, 0}, {-1.0688329943789066, 1.9525134141838387, 0}, {-0.28117510591348677, -0.21728536560804051, 0},
+         {-0.13167900139341382, 0.6280053211592797, 0}, {2.679969628689901, 1.3083715131024223, 0}, {-0.9835854666306936, 0.10431775089342066, 0},
+         {0.01363448300490351, -0.8031370199232937, 0}, {1.0812068986069898, 0.876810334034666, 0}, {-0.016111028347153125, -0.4527501520162352, 0},
+         {-1.0512536116266857, 1.893257904808888, 0}, {-0.1316805277941275, 0.6280056779782485, 0}, {3.2532499688630008, 0.5868074958876383, 0},
+         {0.9088356948378441, 0.9341967916017351, 0}, {-0.06685979548639988, -0.529416817393104, 0}, {1.857633681685374, 0.618319118909403, 0}},
+        {{9, 11, 16}, {5, 0, 14}, {20, 13, 18}, {15, 1, 7}, {6, 8, 4}, {10, 2, 19}, {3, 12, 17}});
+    const VoxelGrid grid(A, B, 1.0, 1);
+    const double corner = 2.716004291271859e-06;  // d(A's corner 15, B)
+    // The piece as fast mode cut it, stopped below L (the corner's squared distance less the tie margin).
+    const std::array<Vec3, 3> piece = {Vec3{-0.98358742363477614, 0.10431586759463096, 0},
+                                       Vec3{-0.93034315703274784, 0.13704655768836613, 0},
+                                       Vec3{-0.93034314360907999, 0.13704657929237601, 0}};
+    TargetSolver ts(grid, 0, 5, piece);
+    ts.stop_below(0.99999 * corner * corner);
+    ts.run();
+    EXPECT_FALSE(ts.stopped_early());
+    EXPECT_GE(std::sqrt(ts.upper_sq()), corner * (1 - 1e-12));
+    HausdorffOptions paper, fast;
+    paper.mode = Mode::Paper;
+    fast.mode = Mode::Fast;
+    const OneSidedResult p = one_sided(grid, 0, paper), f = one_sided(grid, 0, fast);
+    EXPECT_EQ(p.distance, f.distance);
+    EXPECT_NEAR(p.distance, corner, 1e-15);
+    EXPECT_LE(p.lower, corner);
+    EXPECT_GE(p.upper, corner);
+}
