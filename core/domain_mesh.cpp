@@ -406,30 +406,12 @@ Box2 DomainMesh::cached_face_box(int f) {
     return box_cache_[f];
 }
 
-bool DomainMesh::near_boundary(int f, Vec2 p, double tol) const {
+bool DomainMesh::near_boundary(int f, Vec2 p, double tol, int except) const {
     bool near = false;
     for_each_half_edge(f, [&](int h) {
-        if (!near) near = near_arc(h, p, tol);
+        if (!near && (h >> 1) != except) near = near_arc(h, p, tol);
     });
     return near;
-}
-
-// Another arc of one of edge e's two faces passes within kTinyChord of p, a point of e: there one
-// of the faces is a sliver thinner than a chord the splits insert (find_chords), which stays on
-// the side of the rest of its face, whatever its polynomial (as a face that thin as a whole,
-// TargetSolver::validate). Generate_pairs3.py "sliver" 11734, the paper's order: a needle's
-// corner region, a wedge 5e-7 wide per unit, crossed by another needle's region line where it was
-// 3e-12 wide; the wedge's tip below the line, 5.4e-6 long, kept the edge region above, d^2 7e-12
-// by its polynomial beside 0 (the needle lies in T''s plane) across the wedge's side.
-bool DomainMesh::beside_tiny_sliver(int e, Vec2 p) const {
-    for (int F : {half_[2 * e].face, half_[2 * e + 1].face}) {
-        bool near = false;
-        for_each_half_edge(F, [&](int h) {
-            if (!near && (h >> 1) != e) near = near_arc(h, p, kTinyChord);
-        });
-        if (near) return true;
-    }
-    return false;
 }
 
 bool DomainMesh::near_arc(int h, Vec2 p, double tol) const {
@@ -652,7 +634,14 @@ std::string DomainMesh::validate(double area_tol) const {
         const double rounding = rounding_allowance(std::max(qF.scale(), qG.scale()), delta_);
         const double tol = pos * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + pos * pos + rounding +
                            1e-13 * (qF.scale() + qG.scale()) + faces_[F].tie_slack + faces_[G].tie_slack;
-        if (jump > tol && !beside_tiny_sliver((int)e, m))
+        // Nor where another arc of F or G passes within kTinyChord of m: there one of them is a
+        // sliver thinner than a chord the splits insert (find_chords), which stays on the side of
+        // the rest of its face, whatever its polynomial (as a face that thin as a whole,
+        // TargetSolver::validate). Generate_pairs3.py "sliver" 11734, the paper's order: a needle's
+        // corner region, a wedge 5e-7 wide per unit, crossed by another needle's region line where
+        // it was 3e-12 wide; the wedge's tip below the line, 5.4e-6 long, kept the edge region
+        // above, d^2 7e-12 by its polynomial beside 0 (the needle lies in T''s plane).
+        if (jump > tol && !near_boundary(F, m, kTinyChord, (int)e) && !near_boundary(G, m, kTinyChord, (int)e))
             return std::snprintf(buf, sizeof buf, "faces %d and %d: d^2 jumps by %g across edge %zu (%g and %g)", F, G, jump, e,
                                  qF(m), qG(m)), buf;
     }

@@ -125,7 +125,8 @@ public:
     double loop_area(int h) const;
     bool point_in_face(int f, Vec2 p) const;
     bool interior_point(int f, Vec2& out) const;     // some point strictly inside face f
-    bool near_boundary(int f, Vec2 p, double tol) const;  // p within tol of face f's boundary
+    // p within tol of face f's boundary (but for edge `except`, if given)
+    bool near_boundary(int f, Vec2 p, double tol, int except = -1) const;
     Box2 face_box(int f) const;                      // bounding box, bulging arcs included
     Box2 cached_face_box(int f);                     // the same, kept until the mesh is edited
     int face_at(Vec2 p) const;                       // the live inner face containing p, or -1
@@ -254,7 +255,6 @@ private:
     template <class Fn> void for_each_half_edge(int f, Fn&& fn) const;  // in face_half_edges() order
     void collect_half_edges(int f, std::vector<int>& out) const;
     bool near_arc(int h, Vec2 p, double tol) const;  // p within tol of half-edge h's arc
-    bool beside_tiny_sliver(int e, Vec2 p) const;    // another arc of e's faces within kTinyChord of p
 
     // The clipping primitive (domain_split.cpp): split_face_into runs these steps on one SplitCall.
     struct SplitCall;

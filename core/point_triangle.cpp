@@ -31,17 +31,21 @@ static ClosestPoint min_over_edges(const Vec3& p, const Vec3& a, const Vec3& b, 
 // precision. Here the plane is spanned by the longest edge e and the re-orthogonalised height vector g,
 // which keeps every error at about eps * (L + |p-a|) absolute, whatever the shape.
 namespace {
+// The corners relabelled so that r[0] -> r[1] is the longest edge and r[2] the opposite corner.
+void longest_edge_first(const Vec3& a0, const Vec3& b0, const Vec3& c0, const Vec3* r[3]) {
+    const double lab = norm2(b0 - a0), lbc = norm2(c0 - b0), lca = norm2(a0 - c0);
+    r[0] = &a0, r[1] = &b0, r[2] = &c0;
+    if (lbc >= lab && lbc >= lca) r[0] = &b0, r[1] = &c0, r[2] = &a0;
+    else if (lca >= lab && lca >= lbc) r[0] = &c0, r[1] = &a0, r[2] = &b0;
+}
+
 enum class Foot { Inside, Outside, NoHeight };
 // Where p's foot on the triangle's plane falls. Inside: `out` is the foot and its distance.
 // NoHeight (height <= 1e-12 of the longest edge, or one point): `r` holds the corners relabelled
 // so that r[0] -> r[1] is the longest edge.
 Foot face_foot(const Vec3& p, const Vec3& a0, const Vec3& b0, const Vec3& c0, ClosestPoint& out, const Vec3* r[3]) {
-    // Relabel so that a->b is the longest edge and c the opposite corner.
-    double lab = norm2(b0 - a0), lbc = norm2(c0 - b0), lca = norm2(a0 - c0);
-    const Vec3 *a = &a0, *b = &b0, *c = &c0;
-    if (lbc >= lab && lbc >= lca) { a = &b0; b = &c0; c = &a0; }
-    else if (lca >= lab && lca >= lbc) { a = &c0; b = &a0; c = &b0; }
-    r[0] = a, r[1] = b, r[2] = c;
+    longest_edge_first(a0, b0, c0, r);
+    const Vec3 *a = r[0], *b = r[1], *c = r[2];
     Vec3 e = *b - *a;
     double L2 = norm2(e);
     if (L2 == 0) return Foot::NoHeight;  // all three corners coincide
@@ -91,11 +95,10 @@ double triangle_distance_lower(const Vec3& p, const Vec3& a0, const Vec3& b0, co
     // than 11 (then to 2^-64 of the larger, which the allowances below cover).
     auto sub = [](const Vec3& u, const Vec3& v) { return V{(LD)u.x - v.x, (LD)u.y - v.y, (LD)u.z - v.z}; };
     const double edges = std::sqrt(min_over_edges(p, a0, b0, c0).dist2);
-    const Vec3 *a = &a0, *b = &b0, *c = &c0;  // a -> b the longest edge, as face_foot has it
-    const double lab = norm2(b0 - a0), lbc = norm2(c0 - b0), lca = norm2(a0 - c0);
-    if (lbc >= lab && lbc >= lca) { a = &b0; b = &c0; c = &a0; }
-    else if (lca >= lab && lca >= lbc) { a = &c0; b = &a0; c = &b0; }
-    const V e = sub(*b, *a), f = sub(*c, *a), w = sub(p, *a);
+    const Vec3* r[3];  // a -> b the longest edge, as face_foot has it
+    longest_edge_first(a0, b0, c0, r);
+    const Vec3 &a = *r[0], &b = *r[1], &c = *r[2];
+    const V e = sub(b, a), f = sub(c, a), w = sub(p, a);
     const LD L2 = dot(e, e);
     if (L2 == 0) return edges;  // one point
     V g = f - e * (dot(f, e) / L2);
