@@ -11,6 +11,7 @@
 
 #include "cascade.h"
 #include "confirm_top.h"
+#include "point_triangle.h"
 #include "target_solver.h"
 
 namespace hlens {
@@ -72,14 +73,24 @@ double coordinate_allowance(double v, double coord, const Box3& box) { return 1e
 double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const Box3& box, OneSidedResult& r) {
     // The witness in world coordinates, as TargetSolver::max_point() gives it, and its offset from
     // the target's frame origin (a corner of the target, an input point).
-    const TargetFrame frame = TargetFrame::make(grid.mesh(side).corners(r.target));
+    const std::array<Vec3, 3> c = grid.mesh(side).corners(r.target);
+    const TargetFrame frame = TargetFrame::make(c);
     const Vec2 w = tab.where[r.target];
     r.from_point = frame.to_world(w);
-    const Vec3 offset = (w.x * frame.scale) * frame.e1 + (w.y * frame.scale) * frame.e2;
+    Vec3 offset = (w.x * frame.scale) * frame.e1 + (w.y * frame.scale) * frame.e2;
+    // A sliver target's witness, on its edges in the frame, may lie off the sliver by up to its
+    // height (the frame's plane is the sliver's only to that), its slack: it is taken to the
+    // nearest point of the target itself, relative to the frame's origin (one of its corners), so
+    // that its distance bounds the one-sided distance from below. Less the slack instead, the
+    // lower end was 0 where the distance was 4.2e-4 (generate_pairs4.py "thin_shell_far" 187: a
+    // rim sliver 8e-4 high joining the two sides of a shell, coordinates 4e9).
+    if (tab.slack[r.target] > 0) {
+        offset = closest_point_on_triangle(offset, c[0] - frame.origin, c[1] - frame.origin, c[2] - frame.origin).point;
+        r.from_point = frame.origin + offset;
+    }
     const Witness wd = witness_distance(grid.of(1 - side), frame.origin, offset);
     r.to_point = wd.to_point;
-    // (A sliver target's witness may lie off the sliver by up to its height, its slack.)
-    return std::max(0.0, std::min(r.distance, wd.lower - tab.slack[r.target] - witness_rounding(wd.lower, box)));
+    return std::max(0.0, std::min(r.distance, wd.lower - witness_rounding(wd.lower, box)));
 }
 
 // upper: what the confirmation of the top left (confirm_top.cpp: a bound without the domain

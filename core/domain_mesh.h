@@ -268,6 +268,7 @@ private:
     bool reverse_loops(int a, int b) const;
     bool split_arc_on_the_curve(SplitCall& s, int e);
     bool snap_to_end(SplitCall& s, int e, Vec2 p, double tol);
+    bool snap_to_end_on_curve(SplitCall& s, int e, Vec2 p);
     bool pinches_face(const SplitCall& s, int e, Vec2 p, double along_a) const;
     bool past_end(int e, Vec2 p) const;
     bool duplicate_chord(const Chord& c) const;

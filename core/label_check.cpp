@@ -237,6 +237,17 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
                 // domain, and on 625 samples a layer 1.6e-27 away in d^2 was nearest where the
                 // label's is 1.9e-27 away: 3.6e-15 apart in distance, delta 4.3e-14.)
                 tie = near <= best_d2[i] * (1 + 1e-9) + 1e-300 || std::sqrt(near) <= std::sqrt(best_d2[i]) + delta;
+                // Or within the spread of the class's quadratics at p: the rule made them one
+                // polynomial, so the domain cannot tell a distance between them from the class's.
+                // (Generate_pairs4.py "strip_vs_tri" 190: a strip 7e-12 of T' wide, its cells'
+                // diagonals parallel lines 7e-12 apart, tied; a rail between them, 1.2e-9 relative
+                // nearer than the diagonal whose region held p, 2.7e-15 farther than the other.)
+                if (const int c = classes[L.domain[i]]; !tie && c >= 0) {
+                    double lo = HUGE_VAL, hi = -HUGE_VAL;
+                    for (int f : members[c])
+                        if (const Quadratic2* qf = region_quadratic(proj[f / 8], (Region)(f % 8))) lo = std::min(lo, (*qf)(p)), hi = std::max(hi, (*qf)(p));
+                    tie = hi > lo && near - best_d2[i] <= hi - lo;
+                }
                 const Quadratic2* q = proj[s].degenerate ? region_quadratic(proj[s], r) : nullptr;
                 tie = tie || (q && std::fabs((*q)(p) - best_d2[i]) <= 1e-9 * best_d2[i] + 64 * delta);
             }

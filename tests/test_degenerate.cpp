@@ -227,6 +227,43 @@ TEST(LabelCheck, ALabelStandsForItsTieClass) {
     EXPECT_GT(L.ties, L.samples / 2);  // the region test names the face over most of T'
 }
 
+// The tie rule makes quadratics one polynomial that differ by up to 1e-11 of their size; where
+// d^2 is far below that size, the distances they stand for may differ by more than 1e-9 relative.
+// Two edges on parallel lines eps = 8e-12 apart, 0.01 beyond T''s edge, tie (the nearer one's
+// segment ends at x = 0.4, the farther one's starts there); a third edge on a line tilted by 4e-11,
+// between them for x in (0.4, 0.6), is nearest there, 1.6e-9 relative nearer than the farther
+// line along T''s edge. A domain labelled with the nearer line's edge over all of T' carries a
+// polynomial within the pair's spread of every distance there: the overlay counts those samples as
+// ties (generate_pairs4.py "strip_vs_tri" 190, a strip 7e-12 of T' wide: its cells' diagonals
+// tied, a rail between them). Lowered by 3 eps, below both lines, the third edge stays a
+// disagreement.
+TEST(LabelCheck, DistanceWithinATieClassesSpreadIsATie) {
+    const std::array<Vec3, 3> target{Vec3{0, 0.29, 0}, Vec3{1, 0.29, 0}, Vec3{0.5, 0, 0}};
+    const TargetFrame fr = TargetFrame::make(target);
+    const double eps = 8e-12, tilt = 4e-11;
+    const std::array<Vec3, 3> nearer{Vec3{-1, 0.3, 0}, Vec3{0.4, 0.3, 0}, Vec3{-0.3, 1, 0}};
+    const std::array<Vec3, 3> farther{Vec3{0.4, 0.3 + eps, 0}, Vec3{2, 0.3 + eps, 0}, Vec3{1.2, 1, 0}};
+    for (double drop : {0.0, 3 * eps}) {
+        const double y0 = 0.3 + eps / 2 - drop;
+        const std::array<Vec3, 3> between{Vec3{0.4, y0 - 0.1 * tilt, 0}, Vec3{0.6, y0 + 0.1 * tilt, 0}, Vec3{0.5, 1, 0}};
+        const SourceProjection a = project_source(fr, nearer, 2), b = project_source(fr, farther, 0);
+        ASSERT_TRUE(same_feature_quadratic(*region_quadratic(a, Region::ab), Region::ab, *region_quadratic(b, Region::ab), Region::ab,
+                                           std::max(a.delta, b.delta)));
+        SourceProjection edge_only;  // the nearer line's quadratic over all of T', labelled its edge
+        edge_only.source = 2;
+        edge_only.regions.push_back(SourceRegion{Region::ab, {}, *region_quadratic(a, Region::ab)});
+        const auto& o = fr.ccw_order;
+        DomainMesh mesh({fr.corners[o[0]], fr.corners[o[1]], fr.corners[o[2]]});
+        mesh.insert(edge_only);
+        LabelCheckOptions opt;
+        opt.resolution = 1024;
+        const LabelCheck L = check_labels(mesh, fr, {farther, between, nearer}, {0, 1, 2}, opt);
+        ASSERT_GT(L.samples, 100000) << drop;
+        if (drop == 0) EXPECT_EQ(L.disagree, 0) << L.first;
+        else EXPECT_GT(L.disagree, 100) << drop;
+    }
+}
+
 // A sliver source 34317 long and 1.7e-4 tall standing on T' at 90 degrees less 3e-9 rad, its long
 // edge T''s edge (generate_pairs.py "sliver" 33474). Its face, its edge ca and its edge ab are as
 // near over most of T' to 1e-16 relative, and the domain's label is the face: at the sample
@@ -1396,4 +1433,29 @@ TEST(Degenerate, CornerOfAThinPieceIsHeldToItsDistance) {
     EXPECT_NEAR(p.distance, corner, 1e-15);
     EXPECT_LE(p.lower, corner);
     EXPECT_GE(p.upper, corner);
+}
+
+// A sliver target's witness lies on its edges in the frame; the lower end took it to lie off the
+// sliver by up to its height and subtracted that (generate_pairs4.py "thin_shell_far" 187: the
+// lower end 0 where the distance was 4.2e-4, a rim sliver 8e-4 high, coordinates 4e9). Now the
+// witness is taken to the nearest point of the target itself. Here a sliver 1024 long and 1e-5
+// high (1e-8 of its length: handled as its edges) lies flat 1e-3 above a square, 2^20 from the
+// origin: every point of it is exactly 1e-3 from the square, so that is the distance, and the
+// interval must be narrower than 1e-9 of the diagonal (it was 1e-5 wide).
+TEST(Degenerate, SliverWitnessIsTakenOntoTheSliver) {
+    const double X = 1048576, Z = 1048576, d = 0x1p-10;  // 2^-10 = 9.8e-4, exact
+    const TriangleMesh A = make_mesh({{X, X, Z + d}, {X + 1024, X, Z + d}, {X + 512, X + 1e-5, Z + d}}, {{0, 1, 2}});
+    const TriangleMesh B =
+        make_mesh({{X - 64, X - 64, Z}, {X + 1088, X - 64, Z}, {X + 1088, X + 64, Z}, {X - 64, X + 64, Z}}, {{0, 1, 2}, {0, 2, 3}});
+    const VoxelGrid grid(A, B);
+    Box3 box = A.bounds();
+    box.add(B.bounds());
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        HausdorffOptions opt;
+        opt.mode = mode;
+        const OneSidedResult r = one_sided(grid, 0, opt);
+        EXPECT_LE(r.lower, d) << mode_name(mode);
+        EXPECT_GE(r.upper, d) << mode_name(mode);
+        EXPECT_LE(r.upper - r.lower, 1e-9 * box.diagonal()) << mode_name(mode);
+    }
 }
