@@ -31,6 +31,12 @@ constexpr double kFlatTip = 1e-4;
 constexpr double kTwoPi = 6.283185307179586;
 constexpr double kNearlyFull = 1e-4;  // radians short of a whole turn (find_wedge)
 
+// g's tangent line at p: g(p) + grad g(p) . (x - p).
+Quadratic2 tangent_line(const Quadratic2& g, Vec2 p) {
+    const Vec2 n = g.gradient(p);
+    return Quadratic2{0, 0, 0, 0.5 * n.x, 0.5 * n.y, g(p) - dot(n, p)};
+}
+
 // How far p is from the point of `comp` at p's parameter (its foot on a line; near a conic, close
 // to its distance from it).
 double off_component(const CurveComponent& comp, Vec2 p) { return norm(comp.at(comp.param_of(p)) - p); }
@@ -382,6 +388,17 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         // parallel edge is nearer kept the farther one, d^2 2.3 times the truth).
         const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
         if ((std::fabs(g.a) + 2 * std::fabs(g.b) + std::fabs(g.c)) * m * m <= 1e-3 * kZero) g.a = g.b = g.c = 0;
+        // A conic that is straight across the face, to a thousandth of kOnCurve, is its tangent
+        // line there: about the box's centre the quadratic part moves g by at most `bend`, and the
+        // curve by that over the gradient. A hyperbola 1e4 from T' whose branch crosses a face
+        // 2e-5 across was no chord at all, its points from the centre being differences of terms
+        // 5e7 long (generate_pairs4.py "lod_surface" 1258, nearest first: two edges of a fine
+        // sphere meeting over a coarse triangle's edge, and a sliver of the farther one's domain
+        // 1.35e-5 long where the nearer one's is 7.3e-10 nearer kept it: a jump of d^2).
+        const Vec2 mid = 0.5 * (b.lo + b.hi), half = 0.5 * (b.hi - b.lo);
+        const double bend = std::fabs(g.a) * half.x * half.x + 2 * std::fabs(g.b) * half.x * half.y + std::fabs(g.c) * half.y * half.y;
+        const Vec2 slope = g.gradient(mid);
+        if (bend > 0 && bend <= 1e-3 * kOnCurve * norm(slope)) g = tangent_line(g, mid);
         Interval r = g.range(b.lo, b.hi);
         if (r.lo > kZero) { out.push_back({f, 1}); return; }
         if (r.hi < -kZero) { out.push_back({f, -1}); return; }

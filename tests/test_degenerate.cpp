@@ -1459,3 +1459,36 @@ TEST(Degenerate, SliverWitnessIsTakenOntoTheSliver) {
         EXPECT_LE(r.upper - r.lower, 1e-9 * box.diagonal()) << mode_name(mode);
     }
 }
+
+// Generate_pairs4.py "lod_surface" 1258, nearest first (target 6 and the four sources inserted
+// first): a coarse triangle of a sphere under a fine one's edges, which meet over its edge's
+// midpoint. After the fourth insertion g, the difference of the two edges' quadratics, is a
+// hyperbola whose centre lies 1.2e4 from T'; its branch crosses a face 2e-5 across, but its
+// points, taken from the centre, are differences of terms 5e7 long, and no chord was found: a
+// sliver 1.35e-5 long kept the farther edge where the nearer is 7.3e-10 nearer (d^2 5.6e-6), a
+// jump of d^2 across the face's edge. A conic straight across a face to 1e-3 of kOnCurve is now its
+// tangent line there.
+TEST(Degenerate, ConicStraightAcrossAFaceIsItsTangentLine) {
+    const TriangleMesh A = make_mesh({{1.284816372491102, 1.4799309231902382, 2.7386545374533626},
+                                      {-3.1460654167790256, 7.205428848160677, 10.565253889821411},
+                                      {-9.116070913097294, 7.79503574130131, 6.754124645077435}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{1.284816372491102, 1.4799309231902382, 2.7386545374533626},
+                                      {-0.9410749884557601, 4.317000938842512, 6.664351813987569},
+                                      {-3.9307215677395, 4.600393536461976, 4.764296262757372},
+                                      {-3.1460654167790256, 7.205428848160677, 10.565253889821411},
+                                      {-6.135712900450866, 7.488819223512421, 8.665199411485178},
+                                      {-6.911080484774028, 4.906607831983145, 2.853222569243593}},
+                                     {{0, 1, 2}, {1, 3, 4}, {1, 4, 2}, {2, 4, 5}});
+    const VoxelGrid grid(A, B, 1.0, 1);
+    TargetSolver ts(grid, 0, 0);
+    ts.nearest_first();
+    while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
+    // A point of the sliver, 6e-6 along T''s edge from where the two edges' regions meet.
+    const Vec2 p{0.65385854, 0.23074059};
+    const DomainMesh& dm = *ts.domain_mesh();
+    const int f = dm.face_at(p);
+    ASSERT_GT(f, 0);
+    const double d2 = ts.direct_d2(p);
+    EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-9 * d2);
+}
