@@ -66,6 +66,15 @@ struct Target {
     double size;
     bool precise;    // the rounding of world points matters at the tolerance (far from the origin)
     Vec3 at(Vec2 uv) const { return uv.x * e1 + uv.y * e2; }  // relative to o
+    // The (u, v) of p (relative to o) on the target, clamped into it: the normal equations of
+    // p = u e1 + v e2. (0, 0) for a target without area.
+    Vec2 uv_of(const Vec3& p) const {
+        const double a = dot(e1, e1), b = dot(e1, e2), d = dot(e2, e2), det = a * d - b * b;
+        if (!(det > 0)) return {0, 0};
+        Vec2 uv{std::max(0.0, (d * dot(p, e1) - b * dot(p, e2)) / det), std::max(0.0, (a * dot(p, e2) - b * dot(p, e1)) / det)};
+        if (uv.x + uv.y > 1) uv = uv / (uv.x + uv.y);
+        return uv;
+    }
 };
 
 // The distance from o + p to triangle T of B, relative to o: exact rounding-wise up to a few ulps
@@ -233,13 +242,22 @@ bool ridge(const Piece& Q, const Tri3& T, const Tri3& U, Vec3& a, Vec3& nrm) {
     return true;
 }
 
+// A point of the target (relative to its corner) and a value d(., B) is certainly at least there.
+struct Measured {
+    double value = -HUGE_VAL;
+    Vec3 p;
+};
+
 // An upper bound of d(., B) over the piece Q: d(., T), T = triangle t of B, at Q's corners
 // (convexity). Where a corner is farther from T than `goal`, Q is cut between T and the corner's
 // nearest triangle U (bisector, ridge or across_edge, in that order) and each half is bounded by
 // its own triangle, up to `depth` cuts deep: a sub-triangle across a seam of B (where the corner
 // bound alone overshoots by the corner's distance past the seam) closes without splitting it down
-// to the tolerance. `slack` gathers the distances' rounding.
-double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t t, double goal, int depth, double& slack) {
+// to the tolerance. `slack` gathers the distances' rounding; `seen`, the largest distance measured
+// at a corner (the worst corner's, measured to find U): on a ridge between triangles that are not
+// neighbours the cut's ends are where d is largest, and d there is what the bound is.
+double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t t, double goal, int depth, double& slack,
+                   Measured& seen) {
     const Tri3 T = relative(g.mesh(), t, tg.o);
     double worst = -HUGE_VAL;
     int wi = 0;
@@ -251,15 +269,18 @@ double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t
     if (worst <= goal || depth == 0) return worst;
     uint32_t u = t;  // the worst corner's nearest triangle
     double err;
-    if (!(exact_distance(g, tg, Q.p[wi], u, err) < HUGE_VAL) || u == t) return worst;
+    const double at_worst = exact_distance(g, tg, Q.p[wi], u, err);
+    if (!(at_worst < HUGE_VAL)) return worst;
+    if (at_worst - err > seen.value) seen = {at_worst - err, Q.p[wi]};
+    if (u == t) return worst;
     const Tri3 U = relative(g.mesh(), u, tg.o);
     Vec3 a, nrm;
     Piece pos, neg;
     if (!bisector(T, U, a, nrm) && !ridge(Q, T, U, a, nrm) && !across_edge(T, Q.p[wi], a, nrm)) return worst;
     if (!cut(Q, a, nrm, pos, neg)) return worst;
-    const double on_t = pos.n ? piece_bound(g, tg, pos, t, goal, depth - 1, slack) : -HUGE_VAL;
+    const double on_t = pos.n ? piece_bound(g, tg, pos, t, goal, depth - 1, slack, seen) : -HUGE_VAL;
     if (!(on_t <= goal)) return worst;  // this side did not close: the whole piece does not
-    const double on_u = neg.n ? piece_bound(g, tg, neg, u, goal, depth - 1, slack) : -HUGE_VAL;
+    const double on_u = neg.n ? piece_bound(g, tg, neg, u, goal, depth - 1, slack, seen) : -HUGE_VAL;
     return std::min(worst, std::max(on_t, on_u));
 }
 
@@ -355,7 +376,21 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
                 if (!exact) exact_distance(g, tg, m, nearest, err);
                 Piece Q;
                 Q.p[0] = S[0], Q.p[1] = S[1], Q.p[2] = S[2], Q.n = 3;
-                u = std::min(u, piece_bound(g, tg, Q, nearest, L + 0.5 * tol, kCuts, cut_slack));
+                Measured seen;
+                u = std::min(u, piece_bound(g, tg, Q, nearest, L + 0.5 * tol, kCuts, cut_slack, seen));
+                // A corner measured farther than L, for certain: the result rises to it, as to a
+                // centre (generate_pairs4.py "subdiv_far" 3329: along a T-junction's seam, 1e-12 wide
+                // at coordinates 8.6e3, d peaks on the ridge between two triangles of B that are not
+                // neighbours, where no centre falls; each sub-triangle there was bounded by the
+                // ridge's true value, above L, down to the budget, and the target stayed open).
+                if (seen.value > L + slack) {
+                    L = seen.value;
+                    out.raised = true;
+                    out.target = t;
+                    out.origin = tg.o;
+                    raised_uv = tg.uv_of(seen.p);
+                    raised_r = r / std::max(tg.size, 1e-300);
+                }
             }
             u += std::max(slack, cut_slack);
             if (u <= L + tol || !(r > tol)) {  // done (a NaN radius too)
@@ -391,14 +426,11 @@ bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3
                     double coord, Vec3& origin, Vec3& offset, double& polished) {
     const auto c = grid.mesh(side).corners(target);
     const Target tg{c[0], c[1] - c[0], c[2] - c[0], 0, rounding_matters(coord, tol)};
-    // The point's (u, v) on the target: the normal equations of p - o = u E1 + v E2.
-    const Vec3 p = point - c[0];
-    const double a = dot(tg.e1, tg.e1), b = dot(tg.e1, tg.e2), d = dot(tg.e2, tg.e2), det = a * d - b * b;
-    if (!(det > 0)) return false;  // a sliver: its slack covers it
-    Vec2 uv{(d * dot(p, tg.e1) - b * dot(p, tg.e2)) / det, (a * dot(p, tg.e2) - b * dot(p, tg.e1)) / det};
-    uv = {std::max(0.0, uv.x), std::max(0.0, uv.y)};
-    if (uv.x + uv.y > 1) uv = uv / (uv.x + uv.y);
-    uv = polish(grid.of(1 - side), tg, uv, kReach, polished);
+    {
+        const double a = dot(tg.e1, tg.e1), b = dot(tg.e1, tg.e2), d = dot(tg.e2, tg.e2);
+        if (!(a * d - b * b > 0)) return false;  // a sliver: its slack covers it
+    }
+    const Vec2 uv = polish(grid.of(1 - side), tg, tg.uv_of(point - c[0]), kReach, polished);
     if (!(polished > value + 256 * 0x1p-52 * (longest_edge(c) + polished))) return false;
     origin = tg.o;
     offset = tg.at(uv);

@@ -725,7 +725,11 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
     // may lie on either line, 1e-7 from neither. The vertex within kOffCurve of both lines (so
     // that validate() accepts it on both) nearest the centre is the lines' common end (bunny
     // target 56028: the centre 2.4e-7 outside a corner cut off by an edge 9e-7 long, the vertex
-    // there 1.4e-7 from one line). Only where there is none does the centre, inside the face,
+    // there 1.4e-7 from one line), if it lies within kOffCurve of the centre: lines crossing at
+    // 27 degrees pass within kOffCurve of a vertex of one of them 1.6e-6 from the centre, and
+    // taken as the centre it broke the other line's chord there, two quadrants of four were lost
+    // (generate_pairs4.py "nested_scales" 3014, nearest first: a copy of T' 1e-9 of its size
+    // nearer than a plane, over 5% of T'). Only where there is none does the centre, inside the face,
     // become a vertex: a new vertex 1.1e-7 from a corner that is on both lines was joined to
     // the corner by no chord (too short, along the boundary), and one line's chord ended in the
     // middle of the face, cutting nothing (degenerate seeds 308, 2528: coplanar sources 1e10
@@ -734,7 +738,7 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
     for (int v : tmp_.zverts) {
         const Vec2 p = vertices_[v].p;
         const double r = norm(p - m);
-        if (off_component(l1, p) <= kOffCurve && off_component(l2, p) <= kOffCurve && r <= best) best = r, s.centre = v;
+        if (off_component(l1, p) <= kOffCurve && off_component(l2, p) <= kOffCurve && r <= std::min(best, kOffCurve)) best = r, s.centre = v;
     }
     // A vertex of the face within kCluster of the centre is the centre, though |g| > kZero there:
     // where the two lines cross g's gradient vanishes, so neither |g| <= kZero nor the gradient

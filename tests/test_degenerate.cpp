@@ -1492,3 +1492,85 @@ TEST(Degenerate, ConicStraightAcrossAFaceIsItsTangentLine) {
     const double d2 = ts.direct_d2(p);
     EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-9 * d2);
 }
+
+// Generate_pairs4.py "subdiv_far" 3329 (one target and the five triangles of B around it): a
+// triangle 8.6e3 from the origin against its 1-to-4 subdivision beside an unsplit neighbour, the
+// midpoints rounded in world coordinates. Along the T-junction's seam d peaks at 4.8e-13 on the
+// ridge between two triangles of B that are not neighbours; no sub-triangle's centre falls there,
+// and each sub-triangle across it was bounded by the ridge's true value, above the largest
+// distance measured, until the budget ran out: the target stayed open, and the interval was 8.6e-10
+// wide (1e-13 of the coordinates) where the goal is 1.3e-12. A corner measured farther now raises
+// the result, as a centre does. The oracle: d in long double on a grid hugging the seam, a lower
+// bound of the truth that the upper end must hold.
+TEST(Degenerate, RidgeOfASeamRaisesTheConfirmation) {
+    const TriangleMesh A = make_mesh({{-8646.174942020623, 2642.060653428126, -3107.1548233252684},
+                                      {-8646.174890840473, 2642.0596224230935, -3107.1542585354946},
+                                      {-8646.174640845615, 2642.0596389693173, -3107.154395190438}},
+                                     {{0, 2, 1}});
+    const TriangleMesh B = make_mesh({{-8646.175192015482, 2642.060636881902, -3107.1546866703247},
+                                      {-8646.174942020623, 2642.060653428126, -3107.1548233252684},
+                                      {-8646.174890840473, 2642.0596224230935, -3107.1542585354946},
+                                      {-8646.174640845615, 2642.0596389693173, -3107.154395190438},
+                                      {-8646.174791433119, 2642.0601461987217, -3107.1546092578533},
+                                      {-8646.174765843043, 2642.059630696205, -3107.1543268629666},
+                                      {-8646.174916430547, 2642.0601379256095, -3107.1545409303817}},
+                                     {{0, 1, 2}, {1, 4, 6}, {4, 3, 5}, {6, 5, 2}, {4, 5, 6}});
+    const auto c = A.corners(0);
+    long double sampled = 0;
+    for (int i = 0; i <= 40; ++i)
+        for (int j = 0; j <= 400; ++j) {
+            const long double u = i * 2.5e-10L, v = j / 400.0L;  // along the edge c0-c2, at most 1e-8 into A
+            if (u + v > 1) continue;
+            const L3 p = ld(c[0]) + (ld(c[1]) - ld(c[0])) * u + (ld(c[2]) - ld(c[0])) * v;
+            sampled = std::max(sampled, distance_ld(p, B));
+        }
+    ASSERT_GT(sampled, 1e-13L);  // the seam's ridge: the points inside are nearer
+    const VoxelGrid grid(A, B);
+    Box3 box = A.bounds();
+    box.add(B.bounds());
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        HausdorffOptions opt;
+        opt.mode = mode;
+        const OneSidedResult r = one_sided(grid, 0, opt);
+        EXPECT_GE((long double)r.upper, sampled) << mode_name(mode);
+        EXPECT_LE(r.lower, r.distance) << mode_name(mode);
+        EXPECT_LE(r.upper - r.lower, 1e-9 * box.diagonal()) << mode_name(mode);
+    }
+}
+
+// Generate_pairs4.py "nested_scales" 3014, nearest first: a target 1e-5 across against a plane
+// through it (heights 3e-9 of T'), a copy of it 1e-9 of its size off (nearer over half of it) and a
+// copy 1e-9 of its size. The copy's and the plane's quadratics differ by a line pair whose lines
+// cross at 27 degrees, 1.6e-6 outside the tiny copy's domain (a hole in the plane's). A vertex of
+// the hole on one line lies within kOffCurve of the other: taken for the centre, it broke the
+// other line's chord there, and the copy kept none of the two quadrants where it is nearer (d^2
+// 1.14e-18 where the plane's polynomial gave 2.2e-18; 574 of 10,477 of the overlay's samples).
+// The centre's vertex now lies within kOffCurve of the centre.
+TEST(Degenerate, LinePairCentreIsNoFartherVertex) {
+    const TriangleMesh A = make_mesh({{-1.2323533871695138e-11, -2.0825893254907406e-12, 5.13428501250513e-12},
+                                      {0.0005301178452331184, -0.0012833491807933155, 0.002093544836145144},
+                                      {0.001012422654849264, -0.0011067459027076809, 0.0006394479878222693},
+                                      {0.0005121716462644768, -0.0007935862586917006, 0.0009074390254916991},
+                                      {0.0005142424191886519, -0.0007985993418701678, 0.0009156169347016063},
+                                      {0.0005161264223057199, -0.0007979094850217171, 0.0009099368689083926},
+                                      {0.0005141801587553421, -0.0007966983559253299, 0.000910997602913105},
+                                      {0.0005141801627050277, -0.0007966983654870264, 0.0009109976185112296},
+                                      {0.0005141801662984787, -0.0007966983641712295, 0.0009109976076773639}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+    const TriangleMesh B = make_mesh({{0.0005121716463261803, -0.0007935862588851751, 0.0009074390252876733},
+                                      {0.0005142424190980369, -0.0007985993416315398, 0.0009156169348010297},
+                                      {0.0005161264223346316, -0.0007979094850668713, 0.0009099368690129954}},
+                                     {{0, 1, 2}});
+    const VoxelGrid grid(B, A, 1.0, 1);
+    TargetSolver ts(grid, 0, 0);
+    ts.nearest_first();
+    while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
+    const DomainMesh& dm = *ts.domain_mesh();
+    const LabelCheck L = check_labels(dm, ts.frame(), inserted_corners(ts), ts.inserted_sources());
+    EXPECT_EQ(L.disagree, 0) << L.first;
+    const Vec2 p{0.509765625, 0.361328125};  // where the copy is nearer: 1.14e-18 against 2.2e-18
+    const int f = dm.face_at(p);
+    ASSERT_GT(f, 0);
+    const double d2 = ts.direct_d2(p);
+    EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-7 * d2);
+}
