@@ -115,6 +115,20 @@ struct RationalCurve {
     bool straight() const { return n2.x == 0 && n2.y == 0 && w1 == 0 && w2 == 0; }
 };
 
+// The segment from a (z = 0) to b (z = 1), and the line through them (unit normal, a's side).
+inline RationalCurve segment_curve(Vec2 a, Vec2 b) {
+    RationalCurve c;
+    c.n0 = a;
+    c.n1 = b - a;
+    return c;
+}
+inline Quadratic2 line_through(Vec2 a, Vec2 b) {
+    Vec2 n = perp(b - a);
+    const double l = norm(n);
+    if (l > 0) n = n / l;
+    return half_plane(n, dot(n, a));
+}
+
 enum class CurveKind { Line, Ellipse, Hyperbola, Parabola };
 const char* curve_kind_name(CurveKind k);
 

@@ -18,12 +18,6 @@ Quadratic2 normalized(const Quadratic2& q) {
     double s = q.scale();
     return s > 0 ? q * (1.0 / s) : q;
 }
-Quadratic2 line_through(Vec2 a, Vec2 b) {
-    Vec2 n = perp(b - a);
-    double l = norm(n);
-    if (l > 0) n = n / l;
-    return half_plane(n, dot(n, a));
-}
 // 10-point Gauss-Legendre on [-1, 1].
 const double kGx[5] = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244, 0.8650633666889845, 0.9739065285171717};
 const double kGw[5] = {0.2955242247147529, 0.2692667193099963, 0.2190863625159820, 0.1494513491505806, 0.0666713443086881};
@@ -62,10 +56,7 @@ DomainMesh::DomainMesh(const std::array<Vec2, 3>& P) {
     faces_[0].infinite = true;  // outside T': never a domain
     for (int i = 0; i < 3; ++i) add_vertex(P[i]);
     for (int i = 0; i < 3; ++i) {
-        RationalCurve c;
-        c.n0 = P[i];
-        c.n1 = P[(i + 1) % 3] - P[i];
-        int e = add_edge(c, 0, 1, line_through(P[i], P[(i + 1) % 3]), ArcKind::TargetBoundary, CurveKind::Line);
+        int e = add_edge(segment_curve(P[i], P[(i + 1) % 3]), 0, 1, line_through(P[i], P[(i + 1) % 3]), ArcKind::TargetBoundary, CurveKind::Line);
         half_[2 * e].origin = i;
         half_[2 * e + 1].origin = (i + 1) % 3;
         half_[2 * e].face = 1;

@@ -287,6 +287,7 @@ private:
     bool pinched_lobes(int f, int va, int vb, int& ha, int& hb) const;
     void pinch_face(int va, int vb, int ha, int hb);
     void insert_chords(SplitCall& s);
+    void flat_tip_connector(int v, Vec2 curve_end, ArcKind kind, std::vector<int>& verts, std::vector<int>& es);
     void rebuild_split_faces(SplitCall& s, std::vector<SplitPiece>& out);
     int side_of_piece(SplitCall& s, int face, const std::vector<int>& loop_hes) const;
 
