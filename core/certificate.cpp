@@ -102,11 +102,12 @@ double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const 
 // targets it did not solve whole), and bounds it by subdivision of the triangle itself. So the
 // sliver pieces' values with their slack (tab.piece_upper, fast mode only: the interval was looser
 // than paper mode's) are not needed here; a cancelled run, which has no confirmation, uses them.
-// Targets left open (not closed within the subdivision's budget) keep the domain meshes' maximum
-// and slack, widened by a bound on the rounding of coordinates, as a cancelled run has it.
-double upper_end(const TopConfirmation& top, double distance, double coord, const Box3& box) {
+// Targets left open (not closed within the subdivision's budget) are bounded by what their
+// subdivision had when it stopped (confirm_top.cpp, pending_bound), not by their domain meshes'
+// maximum, which is no bound (generate_pairs4.py "cap_sliver" 9260).
+double upper_end(const TopConfirmation& top, double distance) {
     double upper = std::max(distance, top.upper);
-    if (top.open_upper >= 0) upper = std::max(upper, top.open_upper + coordinate_allowance(top.open_upper, coord, box));
+    if (top.open_upper >= 0) upper = std::max(upper, top.open_upper);
     return upper * (1 + 1e-15);
 }
 
@@ -194,7 +195,7 @@ void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode,
             r.to_point = wd.to_point;
         }
     }
-    r.upper = upper_end(top, r.distance, coord, box);
+    r.upper = upper_end(top, r.distance);
     // A one-sided distance is never below its farthest vertex's distance.
     // (The vertices' distances were taken in world coordinates: rounding of their magnitude.)
     if (!(r.upper + 1e-13 * coord >= std::sqrt(tab.vertex_sq)))

@@ -59,6 +59,7 @@ using Tri3 = std::array<Vec3, 3>;
 struct Sub {
     std::array<Vec2, 3> uv;
     uint32_t hint;
+    double bound = HUGE_VAL;  // its parent's upper bound of d over it (HUGE_VAL: none yet)
 };
 
 struct Target {
@@ -309,6 +310,30 @@ Vec2 polish(const MeshGrid& g, const Target& tg, Vec2 uv, double h, double& valu
     return uv;
 }
 
+// An upper bound of d over a target whose subdivision stopped with `stack` left: the bound of the
+// sub-triangles done, and each one left by its parent's bound, or by d at its centre plus its
+// radius where it has none (the target's own triangle, the run's budget spent before it began).
+// Its domain mesh's maximum is no bound: it is exact only up to where its vertices sit, 1e-7 of
+// its size (generate_pairs4.py "cap_sliver" 9260: two targets along a crease of A left open,
+// their domain meshes' 1.429e-12 where d reaches 1.548e-12 by exact rational arithmetic, and the
+// interval's upper end, that value plus 1e-13 of the coordinates, was 1.457e-12).
+double pending_bound(const MeshGrid& g, const Target& tg, const std::vector<Sub>& stack, double done) {
+    double upper = done;
+    for (const Sub& s : stack) {
+        double b = s.bound;
+        if (!(b < HUGE_VAL)) {
+            const std::array<Vec3, 3> S{tg.at(s.uv[0]), tg.at(s.uv[1]), tg.at(s.uv[2])};
+            const Vec3 m = tg.at((s.uv[0] + s.uv[1] + s.uv[2]) / 3.0);
+            const double r = std::max({norm(S[0] - m), norm(S[1] - m), norm(S[2] - m)}) * (1 + 1e-12);
+            uint32_t near = s.hint;
+            const double dm = measure(g, tg, m, near);
+            b = dm < HUGE_VAL ? dm + r + rounding(tg.size, dm, relative(g.mesh(), near, tg.o)) + 0x1p-46 * tg.size : HUGE_VAL;
+        }
+        upper = std::max(upper, b);
+    }
+    return upper;
+}
+
 }  // namespace
 
 bool can_reach(const std::array<Vec3, 3>& corners, double bound, double slack, double L) {
@@ -341,9 +366,13 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
         ++out.targets;
         const size_t budget = std::min(out.nodes + kPerTarget, kBudget);
         double target_upper = -HUGE_VAL;
+        // Largest bound first: where the budget runs out, what is left is bounded by the least
+        // bounds the subdivision had (pending_bound), not by a coarse sibling of a deep path.
+        auto worse = [](const Sub& x, const Sub& y) { return x.bound < y.bound; };
         stack.clear();
         stack.push_back({{Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}}, UINT32_MAX});
         while (!stack.empty() && out.nodes < budget) {
+            std::pop_heap(stack.begin(), stack.end(), worse);
             const Sub s = stack.back();
             stack.pop_back();
             ++out.nodes;
@@ -398,16 +427,17 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
                 continue;
             }
             const Vec2 ab = 0.5 * (s.uv[0] + s.uv[1]), bc = 0.5 * (s.uv[1] + s.uv[2]), ca = 0.5 * (s.uv[2] + s.uv[0]);
-            stack.push_back({{s.uv[0], ab, ca}, near});
-            stack.push_back({{ab, s.uv[1], bc}, near});
-            stack.push_back({{ca, bc, s.uv[2]}, near});
-            stack.push_back({{ab, bc, ca}, near});
+            for (const std::array<Vec2, 3>& child : {std::array<Vec2, 3>{s.uv[0], ab, ca}, std::array<Vec2, 3>{ab, s.uv[1], bc},
+                                                     std::array<Vec2, 3>{ca, bc, s.uv[2]}, std::array<Vec2, 3>{ab, bc, ca}}) {
+                stack.push_back({child, near, u});
+                std::push_heap(stack.begin(), stack.end(), worse);
+            }
         }
         if (stack.empty()) {
             ++out.closed;
             out.upper = std::max(out.upper, target_upper);
-        } else {  // not closed within its budget: its domain mesh's value stands for it
-            out.open_upper = std::max(out.open_upper, tab.bound[t] + tab.slack[t]);
+        } else {  // not closed within its budget: the bounds it has are its upper end
+            out.open_upper = std::max(out.open_upper, pending_bound(g, tg, stack, target_upper));
         }
     }
     out.upper = std::max(out.upper, L);

@@ -13,7 +13,7 @@ struct TargetTable;
 
 struct TopConfirmation {
     double upper = 0;          // the closed targets' bound: over them the distance is at most this
-    double open_upper = -1;    // the open targets' domain-mesh values (+ slivers' slack); -1: none
+    double open_upper = -1;    // the open targets' bounds from their unfinished subdivisions; -1: none
     bool raised = false;       // a point farther than `best` was found: the witness below
     uint32_t target = 0;       // its target,
     Vec3 origin, offset;       // and the point origin + offset (origin: a corner of the target)

@@ -1572,3 +1572,38 @@ TEST(Degenerate, LinePairCentreIsNoFartherVertex) {
     const double d2 = ts.direct_d2(p);
     EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-7 * d2);
 }
+
+// Generate_pairs4.py "cap_sliver" 9260: **a certified interval below the truth**. A is a square
+// split along its diagonal, one half bent at a point of the diagonal 1.6e-12 out of the plane, the
+// gap closed by a cap 1.6e-12 high; B is the flat square, 2x refined. Two targets of B across the
+// crease stayed open (their subdivision's budget spent along it), and their domain meshes' maximum
+// 1.429e-12 plus 1e-13 of the coordinates stood for them: the upper end 1.457e-12, where d
+// reaches 1.548e-12 at a point of B (its value here in long double; exact rational arithmetic
+// agrees). An open target is now bounded by what its subdivision had (largest bound first).
+TEST(Degenerate, OpenTargetIsBoundedByItsSubdivision) {
+    const Vec3 c1{0.04258823997176417, -0.028017222151032535, -0.0597899686968171},
+        c2{-0.016323506650103552, -0.07340703164985665, 0.02277090496050203}, split{-0.005795026962536389, 0.003812333121190666, 0.008135684429226296};
+    const TriangleMesh A = make_mesh({c1, c2, -1.0 * c1, -1.0 * c2, split}, {{0, 1, 2}, {0, 4, 3}, {4, 2, 3}, {0, 2, 4}});
+    const TriangleMesh B = make_mesh({c1,
+                                      {0.01313236666083031, -0.0507121269004446, -0.018509531868157538},
+                                      c2,
+                                      {0.02945587331093386, 0.02269490474941206, -0.04128043682865957},
+                                      {0, 0, 0},
+                                      {-0.02945587331093386, -0.02269490474941206, 0.04128043682865957},
+                                      -1.0 * c2,
+                                      {-0.01313236666083031, 0.0507121269004446, 0.018509531868157538},
+                                      -1.0 * c1},
+                                     {{0, 1, 3}, {1, 4, 3}, {1, 2, 4}, {2, 5, 4}, {3, 4, 6}, {4, 7, 6}, {4, 5, 7}, {5, 8, 7}});
+    const auto t = B.corners(6);
+    const L3 p = ld(t[0]) + (ld(t[1]) - ld(t[0])) * (1.0L / 12) + (ld(t[2]) - ld(t[0])) * (2.0L / 12);
+    const long double at_p = distance_ld(p, A);
+    ASSERT_GT(at_p, 1.5e-12L);
+    const VoxelGrid grid(B, A);
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        HausdorffOptions opt;
+        opt.mode = mode;
+        const OneSidedResult r = one_sided(grid, 0, opt);
+        EXPECT_GE((long double)r.upper, at_p) << mode_name(mode);
+        EXPECT_LE(r.lower, r.distance) << mode_name(mode);
+    }
+}
