@@ -259,7 +259,7 @@ struct Measured {
 // neighbours the cut's ends are where d is largest, and d there is what the bound is.
 double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t t, double goal, int depth, double& slack,
                    Measured& seen) {
-    const Tri3 T = relative(g.mesh(), t, tg.o);
+    Tri3 T = relative(g.mesh(), t, tg.o);
     double worst = -HUGE_VAL;
     int wi = 0;
     for (int i = 0; i < Q.n; ++i) {
@@ -268,8 +268,26 @@ double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t
     }
     slack = std::max(slack, rounding(tg.size, worst, T));
     if (worst <= goal || depth == 0) return worst;
-    uint32_t u = t;  // the worst corner's nearest triangle
+    // The triangle nearest the centre may be the worst one for the whole piece: a needle of B
+    // lying along a crease is nearest on its line only, and every cut kept it on one side
+    // (generate_pairs4.py "cap_sliver" 9260: a cap 1.6e-12 high closing a square bent along its
+    // diagonal; two targets across it stayed open). Each corner's nearest triangle is tried too,
+    // and the one whose corner bound is least is T.
     double err;
+    for (int i = 0; i < Q.n; ++i) {
+        uint32_t c = t;
+        const double d = exact_distance(g, tg, Q.p[i], c, err);
+        if (!(d < HUGE_VAL) || c == t) continue;
+        if (d - err > seen.value) seen = {d - err, Q.p[i]};
+        const Tri3 C = relative(g.mesh(), c, tg.o);
+        double w = -HUGE_VAL;
+        int wc = 0;
+        for (int k = 0; k < Q.n; ++k)
+            if (const double dk = dist_rel(Q.p[k], C); dk > w) w = dk, wc = k;
+        if (w < worst) worst = w, wi = wc, t = c, T = C, slack = std::max(slack, rounding(tg.size, w, C));
+    }
+    if (worst <= goal) return worst;
+    uint32_t u = t;  // the worst corner's nearest triangle
     const double at_worst = exact_distance(g, tg, Q.p[wi], u, err);
     if (!(at_worst < HUGE_VAL)) return worst;
     if (at_worst - err > seen.value) seen = {at_worst - err, Q.p[wi]};

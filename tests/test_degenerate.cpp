@@ -1579,7 +1579,9 @@ TEST(Degenerate, LinePairCentreIsNoFartherVertex) {
 // crease stayed open (their subdivision's budget spent along it), and their domain meshes' maximum
 // 1.429e-12 plus 1e-13 of the coordinates stood for them: the upper end 1.457e-12, where d
 // reaches 1.548e-12 at a point of B (its value here in long double; exact rational arithmetic
-// agrees). An open target is now bounded by what its subdivision had (largest bound first).
+// agrees). An open target is now bounded by what its subdivision had (largest bound first), and
+// the crease closes: a cut piece tries each corner's nearest triangle, not only its centre's (the
+// cap, nearest on its line only).
 TEST(Degenerate, OpenTargetIsBoundedByItsSubdivision) {
     const Vec3 c1{0.04258823997176417, -0.028017222151032535, -0.0597899686968171},
         c2{-0.016323506650103552, -0.07340703164985665, 0.02277090496050203}, split{-0.005795026962536389, 0.003812333121190666, 0.008135684429226296};
@@ -1605,5 +1607,8 @@ TEST(Degenerate, OpenTargetIsBoundedByItsSubdivision) {
         const OneSidedResult r = one_sided(grid, 0, opt);
         EXPECT_GE((long double)r.upper, at_p) << mode_name(mode);
         EXPECT_LE(r.lower, r.distance) << mode_name(mode);
+        // And the crease now closes (each corner's nearest triangle tried for a cut piece): the
+        // interval is within the 1e-9 of the diagonal it was 1.8e-4 of.
+        EXPECT_LE(r.upper - r.lower, 1e-9 * B.bounds().diagonal()) << mode_name(mode);
     }
 }
