@@ -68,13 +68,14 @@ struct Target {
     bool precise;    // the rounding of world points matters at the tolerance (far from the origin)
     Vec3 at(Vec2 uv) const { return uv.x * e1 + uv.y * e2; }  // relative to o
     // The (u, v) of p (relative to o) on the target, clamped into it: the normal equations of
-    // p = u e1 + v e2. (0, 0) for a target without area.
-    Vec2 uv_of(const Vec3& p) const {
+    // p = u e1 + v e2. False, and (0, 0), for a target without area.
+    bool uv_of(const Vec3& p, Vec2& uv) const {
         const double a = dot(e1, e1), b = dot(e1, e2), d = dot(e2, e2), det = a * d - b * b;
-        if (!(det > 0)) return {0, 0};
-        Vec2 uv{std::max(0.0, (d * dot(p, e1) - b * dot(p, e2)) / det), std::max(0.0, (a * dot(p, e2) - b * dot(p, e1)) / det)};
+        uv = {0, 0};
+        if (!(det > 0)) return false;
+        uv = {std::max(0.0, (d * dot(p, e1) - b * dot(p, e2)) / det), std::max(0.0, (a * dot(p, e2) - b * dot(p, e1)) / det)};
         if (uv.x + uv.y > 1) uv = uv / (uv.x + uv.y);
-        return uv;
+        return true;
     }
 };
 
@@ -243,6 +244,36 @@ bool ridge(const Piece& Q, const Tri3& T, const Tri3& U, Vec3& a, Vec3& nrm) {
     return true;
 }
 
+// A sub-triangle measured at its centre: its corners and centre (relative to the target's corner),
+// its enclosing radius, the triangle of B nearest the centre and d there (d <= dm + r over it: d is
+// 1-Lipschitz), and that distance's rounding (+ the sub-triangles' seams). dm is HUGE_VAL where B
+// has no triangle.
+struct Probe {
+    std::array<Vec3, 3> S;
+    Vec2 muv;
+    Vec3 m;
+    double r;
+    uint32_t near;
+    double dm;
+    Tri3 T;
+    double slack;
+};
+Probe probe(const MeshGrid& g, const Target& tg, const Sub& s) {
+    Probe p;
+    p.S = {tg.at(s.uv[0]), tg.at(s.uv[1]), tg.at(s.uv[2])};
+    p.muv = (s.uv[0] + s.uv[1] + s.uv[2]) / 3.0;
+    p.m = tg.at(p.muv);
+    p.r = std::max({norm(p.S[0] - p.m), norm(p.S[1] - p.m), norm(p.S[2] - p.m)}) * (1 + 1e-12);
+    p.near = s.hint;
+    p.dm = measure(g, tg, p.m, p.near);
+    p.slack = 0;
+    if (p.dm < HUGE_VAL) {
+        p.T = relative(g.mesh(), p.near, tg.o);
+        p.slack = rounding(tg.size, p.dm, p.T) + 0x1p-46 * tg.size;
+    }
+    return p;
+}
+
 // A point of the target (relative to its corner) and a value d(., B) is certainly at least there.
 struct Measured {
     double value = -HUGE_VAL;
@@ -340,12 +371,8 @@ double pending_bound(const MeshGrid& g, const Target& tg, const std::vector<Sub>
     for (const Sub& s : stack) {
         double b = s.bound;
         if (!(b < HUGE_VAL)) {
-            const std::array<Vec3, 3> S{tg.at(s.uv[0]), tg.at(s.uv[1]), tg.at(s.uv[2])};
-            const Vec3 m = tg.at((s.uv[0] + s.uv[1] + s.uv[2]) / 3.0);
-            const double r = std::max({norm(S[0] - m), norm(S[1] - m), norm(S[2] - m)}) * (1 + 1e-12);
-            uint32_t near = s.hint;
-            const double dm = measure(g, tg, m, near);
-            b = dm < HUGE_VAL ? dm + r + rounding(tg.size, dm, relative(g.mesh(), near, tg.o)) + 0x1p-46 * tg.size : HUGE_VAL;
+            const Probe p = probe(g, tg, s);
+            b = p.dm < HUGE_VAL ? p.dm + p.r + p.slack : HUGE_VAL;
         }
         upper = std::max(upper, b);
     }
@@ -394,15 +421,8 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
             const Sub s = stack.back();
             stack.pop_back();
             ++out.nodes;
-            const std::array<Vec3, 3> S{tg.at(s.uv[0]), tg.at(s.uv[1]), tg.at(s.uv[2])};
-            const Vec2 muv = (s.uv[0] + s.uv[1] + s.uv[2]) / 3.0;
-            const Vec3 m = tg.at(muv);
-            const double r = std::max({norm(S[0] - m), norm(S[1] - m), norm(S[2] - m)}) * (1 + 1e-12);
-            uint32_t near = s.hint;
-            const double dm = measure(g, tg, m, near);
+            const auto [S, muv, m, r, near, dm, T, slack] = probe(g, tg, s);
             if (!(dm < HUGE_VAL)) { out.upper = HUGE_VAL; return out; }  // B has no triangle
-            const Tri3 T = relative(B, near, tg.o);
-            const double slack = rounding(tg.size, dm, T) + 0x1p-46 * tg.size;  // (+ sub-triangles' seams)
             uint32_t nearest = near;  // the centre's nearest triangle without the world point's rounding,
             const bool exact = dm > L + slack;  // known at once where the centre may be farther than L
             double err = 0;
@@ -435,7 +455,7 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
                     out.raised = true;
                     out.target = t;
                     out.origin = tg.o;
-                    raised_uv = tg.uv_of(seen.p);
+                    tg.uv_of(seen.p, raised_uv);
                     raised_r = r / std::max(tg.size, 1e-300);
                 }
             }
@@ -474,11 +494,9 @@ bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3
                     double coord, Vec3& origin, Vec3& offset, double& polished) {
     const auto c = grid.mesh(side).corners(target);
     const Target tg{c[0], c[1] - c[0], c[2] - c[0], 0, rounding_matters(coord, tol)};
-    {
-        const double a = dot(tg.e1, tg.e1), b = dot(tg.e1, tg.e2), d = dot(tg.e2, tg.e2);
-        if (!(a * d - b * b > 0)) return false;  // a sliver: its slack covers it
-    }
-    const Vec2 uv = polish(grid.of(1 - side), tg, tg.uv_of(point - c[0]), kReach, polished);
+    Vec2 uv;
+    if (!tg.uv_of(point - c[0], uv)) return false;  // a sliver: its slack covers it
+    uv = polish(grid.of(1 - side), tg, uv, kReach, polished);
     if (!(polished > value + 256 * 0x1p-52 * (longest_edge(c) + polished))) return false;
     origin = tg.o;
     offset = tg.at(uv);

@@ -56,7 +56,7 @@ DomainMesh::DomainMesh(const std::array<Vec2, 3>& P) {
     faces_[0].infinite = true;  // outside T': never a domain
     for (int i = 0; i < 3; ++i) add_vertex(P[i]);
     for (int i = 0; i < 3; ++i) {
-        int e = add_edge(segment_curve(P[i], P[(i + 1) % 3]), 0, 1, line_through(P[i], P[(i + 1) % 3]), ArcKind::TargetBoundary, CurveKind::Line);
+        int e = straight_edge(P[i], P[(i + 1) % 3], ArcKind::TargetBoundary);
         half_[2 * e].origin = i;
         half_[2 * e + 1].origin = (i + 1) % 3;
         half_[2 * e].face = 1;

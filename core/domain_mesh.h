@@ -287,7 +287,7 @@ private:
     bool pinched_lobes(int f, int va, int vb, int& ha, int& hb) const;
     void pinch_face(int va, int vb, int ha, int hb);
     void insert_chords(SplitCall& s);
-    void flat_tip_connector(int v, Vec2 curve_end, ArcKind kind, std::vector<int>& verts, std::vector<int>& es);
+    bool flat_tip(int v, Vec2 curve_end) const;
     void rebuild_split_faces(SplitCall& s, std::vector<SplitPiece>& out);
     int side_of_piece(SplitCall& s, int face, const std::vector<int>& loop_hes) const;
 
@@ -323,6 +323,9 @@ private:
 
     int add_vertex(Vec2 p);
     int add_edge(const RationalCurve& c, double z0, double z1, const Quadratic2& eq, ArcKind kind, CurveKind ck);
+    int straight_edge(Vec2 a, Vec2 b, ArcKind kind) {  // the segment a -> b as an edge
+        return add_edge(segment_curve(a, b), 0, 1, line_through(a, b), kind, CurveKind::Line);
+    }
     int target(int h) const { return half_[h ^ 1].origin; }
     Vec2 he_point(int h, double s) const;            // s in [0,1] along the half-edge's direction
     Vec2 out_tangent(int h) const;                   // direction leaving origin(h)

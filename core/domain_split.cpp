@@ -1047,13 +1047,8 @@ bool DomainMesh::boundary_hugs_chord(int f, const Chord& c, double tol) const {
 // crossing, and the face was not cut (generate_pairs4.py "thin_shell_far" 7395, the paper's order:
 // a double line decomposed as a flat parabola whose tip lay 9.4e-5 from the chord's end, and a
 // quadrant where one side of a shell 1.7e-8 thick is 3% nearer than the other kept the other).
-// Appends the gap's far end and edge to verts and es if there is one.
-void DomainMesh::flat_tip_connector(int v, Vec2 curve_end, ArcKind kind, std::vector<int>& verts, std::vector<int>& es) {
-    const Vec2 p = vertices_[v].p;
-    if (!(norm(curve_end - p) > kCluster)) return;
-    es.push_back(add_edge(segment_curve(p, curve_end), 0, 1, line_through(p, curve_end), kind, CurveKind::Line));
-    verts.push_back(add_vertex(curve_end));
-}
+// Whether vertex v and its chord's curve end are that far apart.
+bool DomainMesh::flat_tip(int v, Vec2 curve_end) const { return norm(curve_end - vertices_[v].p) > kCluster; }
 
 // 4. Insert the chords, each as a path of well-conditioned arcs.
 void DomainMesh::insert_chords(SplitCall& s) {
@@ -1068,18 +1063,19 @@ void DomainMesh::insert_chords(SplitCall& s) {
         es.clear();
         int start = c.va >= 0 ? c.va : add_vertex(c.comp.at(c.t0));
         verts.push_back(start);
-        if (c.va >= 0) flat_tip_connector(start, pieces.front().curve(pieces.front().z0), kind, verts, es);
+        const Vec2 head = pieces.front().curve(pieces.front().z0), tail = pieces.back().curve(pieces.back().z1);
+        if (c.va >= 0 && flat_tip(start, head)) {
+            es.push_back(straight_edge(vertices_[start].p, head, kind));
+            verts.push_back(add_vertex(head));
+        }
         for (size_t k = 0; k < pieces.size(); ++k) {
             int e = add_edge(pieces[k].curve, pieces[k].z0, pieces[k].z1, s.g, kind, c.comp.kind);
             es.push_back(e);
             if (k + 1 < pieces.size()) verts.push_back(add_vertex(pieces[k].curve(pieces[k].z1)));
         }
-        if (c.va >= 0) {
-            const Vec2 end = pieces.back().curve(pieces.back().z1);
-            if (norm(end - vertices_[c.vb].p) > kCluster) {
-                verts.push_back(add_vertex(end));
-                es.push_back(add_edge(segment_curve(end, vertices_[c.vb].p), 0, 1, line_through(end, vertices_[c.vb].p), kind, CurveKind::Line));
-            }
+        if (c.va >= 0 && flat_tip(c.vb, tail)) {
+            verts.push_back(add_vertex(tail));
+            es.push_back(straight_edge(tail, vertices_[c.vb].p, kind));
         }
         verts.push_back(c.va >= 0 ? c.vb : start);
         if (c.va < 0 && pieces.size() < 2) { ++stats_.warnings; continue; }

@@ -57,6 +57,14 @@ std::vector<std::array<Vec3, 3>> inserted_corners(const TargetSolver& ts) {
     return out;
 }
 
+// The polynomial of the domain at p against d^2 there, evaluated directly: to `rel` relative.
+void expect_polynomial_is_d2(const TargetSolver& ts, Vec2 p, double rel) {
+    const int f = ts.domain_mesh()->face_at(p);
+    ASSERT_GT(f, 0) << p.x << " " << p.y;
+    const double d2 = ts.direct_d2(p);
+    EXPECT_NEAR(ts.domain_mesh()->faces()[f].poly(p), d2, rel * d2) << p.x << " " << p.y;
+}
+
 // max over the used vertices of A, and over a barycentric grid on every triangle of A, of the
 // distance to B: both lower bounds of h(A, B).
 void brute_lower_bounds(const TriangleMesh& A, const TriangleMesh& B, double& vertex, double& sampled) {
@@ -1151,15 +1159,11 @@ TEST(Degenerate, LinePairCentreJustOutsideTheTargetKeepsBothCrossings) {
     ts.on_event([](const Event&) {});  // watched: the paper's insertion
     ts.validate_each_insertion(true);
     EXPECT_NO_THROW(while (ts.step()) {});
-    const DomainMesh& m = *ts.domain_mesh();
-    const Vec2 p{0.499999013, 0.866021901};  // 1e-6 inside T''s edge, 3e-6 from its corner
-    const int f = m.face_at(p);
-    ASSERT_GT(f, 0);
-    // p is more than 1e-7 from the domain's boundary. The polynomial agrees with d^2 to 8e-17
-    // (4e-4 relative), far within the rounding of quadratics from corners 1.2e7 from the origin
-    // (TargetSolver::rounding_sq, 5.7e-14 here); before, it was 9 times d^2.
-    const double d2 = ts.direct_d2(p);
-    EXPECT_NEAR(m.faces()[f].poly(p), d2, 1e-3 * d2);
+    // 1e-6 inside T''s edge, 3e-6 from its corner, and more than 1e-7 from the domain's boundary.
+    // The polynomial agrees with d^2 to 8e-17 (4e-4 relative), far within the rounding of
+    // quadratics from corners 1.2e7 from the origin (TargetSolver::rounding_sq, 5.7e-14 here);
+    // before, it was 9 times d^2.
+    expect_polynomial_is_d2(ts, {0.499999013, 0.866021901}, 1e-3);
 }
 
 // Generate_pairs.py "tjunction" 38792: over A's target 0 a corner of B's triangle 1 is nearer than
@@ -1194,10 +1198,7 @@ TEST(Degenerate, ClosedChordInsideAFaceIsAHoleOfIt) {
     TargetSolver ts(grid, 0, 0);
     ts.run();
     const Vec2 p{0.555517248, 0.393583492};  // inside the ellipse, 0.03 from it
-    const int f = ts.domain_mesh()->face_at(p);
-    ASSERT_GT(f, 0);
-    const double d2 = ts.direct_d2(p);
-    EXPECT_NEAR(ts.domain_mesh()->faces()[f].poly(p), d2, 1e-7 * d2);
+    expect_polynomial_is_d2(ts, p, 1e-7);
 }
 
 // Generate_pairs.py "sliver" 37698, the paper's order: a strip of needles 2e-8 wide and 2e4 long
@@ -1234,12 +1235,10 @@ TEST(Degenerate, ArcStartingAtAFlatTipIsJoinedToItsVertex) {
     ts.on_event([](const Event&) {});  // the paper's insertion
     while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
     const Vec2 p{0.393265209, 0.087352548};  // 7.2e-6 outside the corner's region, in its edge's
-    const DomainMesh& dm = *ts.domain_mesh();
-    const int f = dm.face_at(p);
+    expect_polynomial_is_d2(ts, p, 1e-3);
+    const int f = ts.domain_mesh()->face_at(p);
     ASSERT_GT(f, 0);
-    const double d2 = ts.direct_d2(p);
-    EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-3 * d2);
-    EXPECT_NE(dm.faces()[f].label.region, Region::b);
+    EXPECT_NE(ts.domain_mesh()->faces()[f].label.region, Region::b);
 }
 
 // Generate_pairs3.py "sliver" 11734, the paper's order: needles along the diagonal of a grid, in
@@ -1337,11 +1336,7 @@ TEST(Degenerate, NearlyFullWedgeWaitsForTheSecants) {
     ts.nearest_first();
     while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
     const Vec2 p{0.500006956, 0.499985077};  // in the strip
-    const DomainMesh& dm = *ts.domain_mesh();
-    const int f = dm.face_at(p);
-    ASSERT_GT(f, 0);
-    const double d2 = ts.direct_d2(p);
-    EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-3 * d2);
+    expect_polynomial_is_d2(ts, p, 1e-3);
 }
 
 // Generate_pairs3.py "coinc_retri_far" 13964, nearest first: a hexagonal prism against a copy
@@ -1494,11 +1489,7 @@ TEST(Degenerate, ConicStraightAcrossAFaceIsItsTangentLine) {
     while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
     // A point of the sliver, 6e-6 along T''s edge from where the two edges' regions meet.
     const Vec2 p{0.65385854, 0.23074059};
-    const DomainMesh& dm = *ts.domain_mesh();
-    const int f = dm.face_at(p);
-    ASSERT_GT(f, 0);
-    const double d2 = ts.direct_d2(p);
-    EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-9 * d2);
+    expect_polynomial_is_d2(ts, p, 1e-9);
 }
 
 // Generate_pairs4.py "subdiv_far" 3329 (one target and the five triangles of B around it): a
@@ -1566,11 +1557,7 @@ TEST(Degenerate, LinePairCentreIsNoFartherVertex) {
     const DomainMesh& dm = *ts.domain_mesh();
     const LabelCheck L = check_labels(dm, ts.frame(), inserted_corners(ts), ts.inserted_sources());
     EXPECT_EQ(L.disagree, 0) << L.first;
-    const Vec2 p{0.509765625, 0.361328125};  // where the copy is nearer: 1.14e-18 against 2.2e-18
-    const int f = dm.face_at(p);
-    ASSERT_GT(f, 0);
-    const double d2 = ts.direct_d2(p);
-    EXPECT_NEAR(dm.faces()[f].poly(p), d2, 1e-7 * d2);
+    expect_polynomial_is_d2(ts, {0.509765625, 0.361328125}, 1e-7);  // where the copy is nearer: 1.14e-18 against 2.2e-18
 }
 
 // Generate_pairs4.py "cap_sliver" 9260: **a certified interval below the truth**. A is a square
