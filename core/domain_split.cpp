@@ -830,7 +830,12 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             }
             continue;
         }
-        if (c.va >= 0 && !(c.t1 - c.t0 > 1e-12)) continue;
+        // No length in the curve's parameter and none in the plane: the same point twice. The
+        // parameter alone says nothing of length: a hyperbola whose centre lies far off T' crossed
+        // a needle 7.7e-8 wide between parameters 5.4e-13 apart (generate_pairs3.py
+        // "perpendicular" 23943: that chord dropped, the whole needle kept the farther source,
+        // d^2 0.0178 where the truth is 0.0020).
+        if (c.va >= 0 && !(c.t1 - c.t0 > 1e-12) && !(norm(comp.at(c.t1) - comp.at(c.t0)) > kTinyChord)) continue;
         Vec2 mid = comp.at(0.5 * (c.t0 + c.t1));
         if (c.va >= 0) {
             // A piece along the face's boundary is already there (its ends one point, or its middle

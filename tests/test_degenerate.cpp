@@ -1492,6 +1492,45 @@ TEST(Degenerate, ConicStraightAcrossAFaceIsItsTangentLine) {
     expect_polynomial_is_d2(ts, p, 1e-9);
 }
 
+// Generate_pairs3.py "perpendicular" 23943 (target 0 and two of B's eight triangles), both orders:
+// two fins standing on T', one (the second) 1.5e-12 above it and leaning 2.6e-9 rad. Beyond its
+// corner b, the region of its edge bc is a needle between two region lines 7.7e-7 rad apart, up to
+// 7.7e-8 wide, running from the fin's foot towards the first fin, which is nearer past the conic
+// where their quadratics are equal. That conic, a hyperbola whose centre lies far off T', crossed
+// the needle between curve parameters 5.4e-13 apart, and the chord was dropped as having no
+// length (the test was on the parameter, not the plane): the whole needle, 0.09 of T' long, kept
+// the first fin's edge, d^2 0.0178 where the truth is 0.0020, and validate() found d^2 jumping
+// across the needle's edge. The oracle: d by brute force on a segment across the needle.
+TEST(Degenerate, ChordShortInItsParameterButNotInThePlaneIsKept) {
+    const TriangleMesh A = make_mesh({{-1, -1, 0}, {1, -1, 0}, {1, 0, 0}}, {{0, 1, 2}});
+    const double yb = -0.9289040238841911;  // the leaning fin's corner b
+    const TriangleMesh B = make_mesh({{0.29089267834138743, -0.9306153477984784, 6.270501466390105e-14},
+                                      {0.29234998239413235, -0.9306153477984784, 6.270501466390105e-14},
+                                      {0.29070149225864506, -0.9306153477984784, 0.44873765934625626},
+                                      {-0.10697018726355867, -0.9308707578133095, 1.5161137319600407e-12},
+                                      {-0.10697018726355867, yb, 1.5161137319600407e-12},
+                                      {-0.1069701868384782, -0.9293933867139367, 0.1656916850777681}},
+                                     {{0, 1, 2}, {3, 4, 5}});
+    const VoxelGrid grid(A, B, 1.0, 1);
+    for (bool nearest : {false, true}) {
+        TargetSolver ts(grid, 0, 0);
+        if (nearest) ts.nearest_first();
+        while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions, nearest " << nearest;
+        // Across the needle halfway along it (world x between the fin's foot and the conic),
+        // 3e-7 either side of the line through b: each point's polynomial is d^2, up to the
+        // gradient (0.09) times the resolution (2e-7) where a boundary is that near.
+        const double scale2 = ts.frame().scale * ts.frame().scale;
+        for (int k = -30; k <= 30; ++k) {
+            const Vec3 w{-0.007, yb + k * 1e-8, 0};
+            const Vec2 p = ts.frame().to_frame(w);
+            const int f = ts.domain_mesh()->face_at(p);
+            ASSERT_GT(f, 0) << k;
+            const double d2 = brute_distance(w, B) * brute_distance(w, B) / scale2;
+            EXPECT_NEAR(ts.domain_mesh()->faces()[f].poly(p), d2, 1e-4 * d2) << "nearest " << nearest << ", " << k << " e-8 from b's line";
+        }
+    }
+}
+
 // Generate_pairs4.py "subdiv_far" 3329 (one target and the five triangles of B around it): a
 // triangle 8.6e3 from the origin against its 1-to-4 subdivision beside an unsplit neighbour, the
 // midpoints rounded in world coordinates. Along the T-junction's seam d peaks at 4.8e-13 on the
