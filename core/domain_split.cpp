@@ -30,6 +30,9 @@ constexpr double kOnCurve = 1e-8;   // a vertex this close to a curve is on it
 constexpr double kFlatTip = 1e-4;
 constexpr double kTwoPi = 6.283185307179586;
 constexpr double kNearlyFull = 1e-4;  // radians short of a whole turn (find_wedge)
+// Tangents decide a wedge only with this margin (radians); closer calls go to the secants first
+// (find_wedge).
+constexpr double kTangentTie = 1e-2;
 
 // g's tangent line at p: g(p) + grad g(p) . (x - p).
 Quadratic2 tangent_line(const Quadratic2& g, Vec2 p) {
@@ -95,7 +98,15 @@ int DomainMesh::split_edge(int e, double z) {
     return v;
 }
 
-int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2) {
+// Half-edge h's tangent at its origin may point off by a turn of its curve: a curved arc whose
+// curve starts farther than kOnCurve from the vertex (up to kCluster: chords end at vertices on the
+// curve to that) (find_wedge).
+bool DomainMesh::loose_tangent(int h) const {
+    const Edge& E = edges_[h >> 1];
+    return !E.curve.straight() && norm(E.curve((h & 1) ? E.z1 : E.z0) - vertices_[half_[h].origin].p) > kOnCurve;
+}
+
+int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose) {
     std::vector<int>& cands = tmp_.wedge_cands;
     cands.clear();
     for (int h : hes)
@@ -103,9 +114,20 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
     if (cands.size() == 1) return cands[0];
     if (cands.empty()) return -1;
     double ad = std::atan2(dir.y, dir.x);
-    for (int pass = 0; pass < 2; ++pass) {
+    // Pass 0: tangents. A curved arc's tangent is its curve's at the curve's end, which may lie up
+    // to kCluster from the vertex (loose_tangent): at a thin conic's hairpin the curve turns within
+    // that, and the tangent of a chord ending 5e-8 from its vertex pointed 3.1e-3 rad across the
+    // boundary arc beside it, into the wrong wedge (generate_pairs4.py "thin_shell" 14160, nearest
+    // first: a lens 6e-6 wide along T''s edge, where an edge of the shell's other side is nearer,
+    // left in one piece with the rest, d^2 up to 3 times the truth). Such tangents decide only
+    // by kTangentTie; closer calls go to pass 1, short secants. Pass 2: those tangents to
+    // rounding, as a last resort. (Straight arcs keep their tangents: at a line pair's centre, a
+    // vertex up to kOffCurve off both lines, a secant is no direction at all; "perp" 8499.)
+    for (int pass = 0; pass < 3; ++pass) {
+        if (pass == 2) ad = std::atan2(dir.y, dir.x);
         for (int hin : cands) {
             int hout = half_[hin].next;
+            const double margin = pass == 0 && (dir_loose || loose_tangent(hout) || loose_tangent(hin ^ 1)) ? kTangentTie : 1e-12;
             Vec2 dout = out_tangent(hout), dback = out_tangent(hin ^ 1);
             if (pass == 1) {  // tangential ties: compare short secants instead of tangents
                 dout = he_point(hout, 1e-3) - vertices_[v].p;
@@ -124,9 +146,9 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
             // of a curved boundary arc's, the wedge between them read as 2 pi less 2.9e-5 and took
             // the second chord, which left one piece where there were three, and a strip 1.4e-5
             // wide where a source's face was nearer kept the farther one, d^2 70% above.)
-            if (pass == 0 && hout != (hin ^ 1) && (rb <= 1e-12 || rb >= kTwoPi - kNearlyFull)) continue;
+            if (pass != 1 && hout != (hin ^ 1) && (rb <= margin || rb >= kTwoPi - std::max(margin, kNearlyFull))) continue;
             if (rb == 0) rb = kTwoPi;
-            if (rd > 1e-12 && rd < rb - 1e-12) return hin;
+            if (rd > margin && rd < rb - margin) return hin;
         }
     }
     return cands[0];
@@ -159,7 +181,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
     int a = verts.front(), b = verts.back();
     // An end at a vertex with no edge yet (the centre of a line pair) becomes the tip of a
     // dangling path, which later paths to the same vertex attach to.
-    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first));
+    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first), loose_tangent(first));
     if (hin < 0) {
         half_[first + 1].next = first; half_[first].prev = first + 1;
     } else {
@@ -167,7 +189,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
         half_[hin].next = first; half_[first].prev = hin;
         half_[first + 1].next = hout; half_[hout].prev = first + 1;
     }
-    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1));
+    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1), loose_tangent(last + 1));
     if (hin2 < 0) {
         half_[last].next = last + 1; half_[last + 1].prev = last;
     } else {

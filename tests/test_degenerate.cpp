@@ -65,6 +65,31 @@ void expect_polynomial_is_d2(const TargetSolver& ts, Vec2 p, double rel) {
     EXPECT_NEAR(ts.domain_mesh()->faces()[f].poly(p), d2, rel * d2) << p.x << " " << p.y;
 }
 
+// Target 0 of A against B, in the paper's order and nearest first, validate() after every
+// insertion; then `probe(ts)` on the finished construction.
+template <class Probe>
+void expect_both_orders_hold(const TriangleMesh& A, const TriangleMesh& B, Probe&& probe) {
+    const VoxelGrid grid(A, B, 1.0, 1);
+    for (bool nearest : {false, true}) {
+        SCOPED_TRACE(nearest ? "nearest first" : "the paper's order");
+        TargetSolver ts(grid, 0, 0);
+        if (nearest) ts.nearest_first();
+        while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
+        probe(ts);
+    }
+}
+
+// The domain polynomial at p (frame) and d^2 there by brute force over B (frame units); false
+// if p is in no domain.
+bool polynomial_and_d2(const TargetSolver& ts, const TriangleMesh& B, Vec2 p, double& poly, double& d2) {
+    const int f = ts.domain_mesh()->face_at(p);
+    if (f <= 0) return false;
+    const double d = brute_distance(ts.frame().to_world(p), B) / ts.frame().scale;
+    poly = ts.domain_mesh()->faces()[f].poly(p);
+    d2 = d * d;
+    return true;
+}
+
 // max over the used vertices of A, and over a barycentric grid on every triangle of A, of the
 // distance to B: both lower bounds of h(A, B).
 void brute_lower_bounds(const TriangleMesh& A, const TriangleMesh& B, double& vertex, double& sampled) {
@@ -1511,24 +1536,51 @@ TEST(Degenerate, ChordShortInItsParameterButNotInThePlaneIsKept) {
                                       {-0.10697018726355867, yb, 1.5161137319600407e-12},
                                       {-0.1069701868384782, -0.9293933867139367, 0.1656916850777681}},
                                      {{0, 1, 2}, {3, 4, 5}});
-    const VoxelGrid grid(A, B, 1.0, 1);
-    for (bool nearest : {false, true}) {
-        TargetSolver ts(grid, 0, 0);
-        if (nearest) ts.nearest_first();
-        while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions, nearest " << nearest;
-        // Across the needle halfway along it (world x between the fin's foot and the conic),
-        // 3e-7 either side of the line through b: each point's polynomial is d^2, up to the
-        // gradient (0.09) times the resolution (2e-7) where a boundary is that near.
-        const double scale2 = ts.frame().scale * ts.frame().scale;
+    // Across the needle halfway along it (world x between the fin's foot and the conic), 3e-7
+    // either side of the line through b: each point's polynomial is d^2, up to the gradient (0.09)
+    // times the resolution (2e-7) where a boundary is that near.
+    expect_both_orders_hold(A, B, [&](const TargetSolver& ts) {
         for (int k = -30; k <= 30; ++k) {
-            const Vec3 w{-0.007, yb + k * 1e-8, 0};
-            const Vec2 p = ts.frame().to_frame(w);
-            const int f = ts.domain_mesh()->face_at(p);
-            ASSERT_GT(f, 0) << k;
-            const double d2 = brute_distance(w, B) * brute_distance(w, B) / scale2;
-            EXPECT_NEAR(ts.domain_mesh()->faces()[f].poly(p), d2, 1e-4 * d2) << "nearest " << nearest << ", " << k << " e-8 from b's line";
+            double poly, d2;
+            ASSERT_TRUE(polynomial_and_d2(ts, B, ts.frame().to_frame(Vec3{-0.007, yb + k * 1e-8, 0}), poly, d2)) << k;
+            EXPECT_NEAR(poly, d2, 1e-4 * d2) << k << " e-8 from b's line";
         }
-    }
+    });
+}
+
+// Generate_pairs4.py "thin_shell" 14160 (target 5 and two of B's triangles), both orders: a plate
+// 1.3e-5 thick, one side A, the other B; a triangle of B lies 6.1e-6 under the target (d^2
+// 3.7e-11 over it), another's edge runs along the target's edge. The set where that edge is
+// nearer is a thin ellipse along T''s edge, 6e-6 wide at the middle, its tip at T''s corner; the
+// boundary meets its near side 5e-8 from the far side, where two chords of the far side end. The
+// chord towards the tip ended there with the curve's tangent 3.1e-3 rad across T''s edge, the
+// wedge chosen by it was the wrong one, and the lens stayed in one piece with the rest of the
+// face: d^2 up to 3 times the truth over it. A curved arc whose curve ends off its vertex now
+// decides a wedge by its tangent only with a margin, else by secants. The oracle: d by brute
+// force on a segment across the lens.
+TEST(Degenerate, TangentOfAChordEndingOffItsVertexDecidesNoCloseWedge) {
+    const TriangleMesh A = make_mesh({{-0.556562717917214, -0.4956821757316062, 0.30833165738044166},
+                                      {-0.09391721214353826, -0.05320656533361441, 0.5648684396656971},
+                                      {-0.09124267805875094, 0.05998879250947858, 0.3647947955459698}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-0.5565660127799874, -0.49567956034966615, 0.30833307200005117},
+                                      {-0.093920503156805, -0.05320395502628446, 0.5648698725018177},
+                                      {-0.09124597253041314, 0.05999142088622869, 0.3647961867986981},
+                                      {-0.09391392113027155, -0.05320917564094438, 0.5648670068295762}},
+                                     {{0, 1, 2}, {0, 1, 3}});
+    // Across the lens halfway along T''s edge (frame y 0.15 there), into T' by 1.2e-5: the
+    // polynomial is d^2 to the gradient (1e-5) times the resolution (2e-7) where a boundary is
+    // that near.
+    expect_both_orders_hold(A, B, [&](const TargetSolver& ts) {
+        int inside = 0;
+        for (int k = 0; k <= 60; ++k) {
+            double poly, d2;
+            if (!polynomial_and_d2(ts, B, Vec2{0.55, 0.150002 - k * 2e-7}, poly, d2)) continue;
+            ++inside;
+            EXPECT_NEAR(poly, d2, 3e-12) << k;
+        }
+        EXPECT_GE(inside, 55);
+    });
 }
 
 // Generate_pairs4.py "subdiv_far" 3329 (one target and the five triangles of B around it): a
