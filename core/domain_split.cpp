@@ -151,7 +151,23 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
             if (rd > margin && rd < rb - margin) return hin;
         }
     }
-    return cands[0];
+    // In no wedge: the direction leaves v just outside the face, across an arc the curve crosses at
+    // v at a small angle and again within kCluster (the two crossings one vertex). The wedge whose
+    // side it is nearest to by tangents is where the curve goes on inside. (Generate_pairs3.py
+    // "parallel_edge" 28995, the paper's order: a line crossing a conic boundary arc at 2.1e-3 rad
+    // at a vertex where its chord was cut in two; the second half went into the other wedge, and
+    // the strip between the line and T''s edge, where the old source is nearer, was lost.)
+    int best = cands[0];
+    double best_off = HUGE_VAL;
+    const double ad0 = std::atan2(dir.y, dir.x);
+    for (int hin : cands) {
+        const Vec2 dout = out_tangent(half_[hin].next), dback = out_tangent(hin ^ 1);
+        const double ao = std::atan2(dout.y, dout.x), rb = wrap2pi(std::atan2(dback.y, dback.x) - ao);
+        const double rd = wrap2pi(ad0 - ao);
+        const double off = std::min(kTwoPi - rd, rd - rb);  // past the wedge's start or its end
+        if (off < best_off) best_off = off, best = hin;
+    }
+    return best;
 }
 
 void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& es, bool closed_new) {
