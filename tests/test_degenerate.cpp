@@ -1620,6 +1620,45 @@ TEST(Degenerate, ChordLeavingItsVertexInNoWedgeGoesOnInside) {
     });
 }
 
+// Generate_pairs3.py "sliver" 26294, nearest first (target 3 of B and three of A's slivers, which
+// lie within 1e-5 of its plane): a region line of the last sliver passes through the tip of a
+// spike of a domain, where the spike's two sides are 1.6e-8 apart. The chord from one side of the
+// tip and the chord to the other were left in different loops of the face and bridged them, so
+// the face stayed whole across the line, and the source nearer on one side of it got none of it:
+// d^2 4.3 times the truth over 0.0037 of T'. A short chord whose middle lies outside the face now
+// pinches the face there, as one shorter than kTinyChord does. The oracle: d by brute force on a
+// grid over that part of T' (d^2 below 2e-11 of T''s size squared).
+TEST(Degenerate, ShortChordAcrossTheGapAtASpikesTipPinchesTheFace) {
+    const TriangleMesh A = make_mesh({{-1.5494508541672527, -0.31495979950420927, -0.0015411737864600705},
+                                      {-1.0729980783071147, -1.0735490996189114, 0.4429079528035869},
+                                      {1.5494508541672527, 0.31495979950420927, 0.0015411737864600705}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{1.1818926614226872, -0.15078243169244676, 0.20412024767561862},
+                                      {-0.30098497099216737, 0.7185502188030948, -0.404982569521034},
+                                      {-2.016273161109507, 0.6833881149258144, -0.5691395604262065},
+                                      {-0.34476532698585066, -1.1291013673992418, 0.5492916971058195},
+                                      {1.2335286777735308, 0.39622676449101857, -0.07428023399722705},
+                                      {-0.2444021734913488, -0.019853581722774995, -0.01565922988119636},
+                                      {1.1339894620202, 0.027567110243997717, 0.10645494032898156},
+                                      {1.6396632336582941, 0.2295918502868834, 0.05545440908949906},
+                                      {-1.3283125334631027, -0.5045825538743178, 0.12042450048587251}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+    expect_constructions_hold(A, B, [&](const TargetSolver& ts) {
+        double worst = 0;
+        int near = 0;
+        for (int i = 0; i <= 40; ++i)
+            for (int j = 0; j <= 8; ++j) {
+                double poly, d2;
+                const Vec2 p{0.17 + i * 0.0045, 0.0005 + j * 0.005};
+                if (!polynomial_and_d2(ts, B, p, poly, d2) || d2 > 2e-11) continue;
+                ++near;
+                worst = std::max(worst, std::fabs(poly - d2) / d2);
+            }
+        EXPECT_GE(near, 100);
+        EXPECT_LT(worst, 1e-6);
+    });
+}
+
 // Generate_pairs4.py "subdiv_far" 3329 (one target and the five triangles of B around it): a
 // triangle 8.6e3 from the origin against its 1-to-4 subdivision beside an unsplit neighbour, the
 // midpoints rounded in world coordinates. Along the T-junction's seam d peaks at 4.8e-13 on the
