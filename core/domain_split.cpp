@@ -153,7 +153,9 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
     }
     // In no wedge: the direction leaves v just outside the face, across an arc the curve crosses at
     // v at a small angle and again within kCluster (the two crossings one vertex). The wedge whose
-    // side it is nearest to by tangents is where the curve goes on inside. (Generate_pairs3.py
+    // side it is nearest to by tangents, within kTangentTie, is where the curve goes on inside;
+    // farther from every wedge the arcs' tangents say nothing (generate_pairs4.py "strip_vs_tri"
+    // 14674: 1.57 rad from both, where the first candidate is right). (Generate_pairs3.py
     // "parallel_edge" 28995, the paper's order: a line crossing a conic boundary arc at 2.1e-3 rad
     // at a vertex where its chord was cut in two; the second half went into the other wedge, and
     // the strip between the line and T''s edge, where the old source is nearer, was lost.)
@@ -167,7 +169,7 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
         const double off = std::min(kTwoPi - rd, rd - rb);  // past the wedge's start or its end
         if (off < best_off) best_off = off, best = hin;
     }
-    return best;
+    return best_off < kTangentTie ? best : cands[0];
 }
 
 void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& es, bool closed_new) {
@@ -908,8 +910,15 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
                 continue;
             }
             if (flat_boundary_edge(s, c.va, c.vb)) continue;
-            if ((short_chord || near_boundary(f, mid, tol)) && (boundary_hugs_chord(f, c, tol) || !chord_inside(s, c)))
+            if ((short_chord || near_boundary(f, mid, tol)) && boundary_hugs_chord(f, c, tol)) continue;
+            if ((short_chord || near_boundary(f, mid, tol)) && !chord_inside(s, c)) {
+                // The same gap, where the curve passes outside between the ends (generate_pairs4.py
+                // "thin_shell" 16336, the debugger's construction: a spike 1.1e-3 long whose base,
+                // 1.9e-8 across, the conic crossed; the spike, where the old source is nearer,
+                // went with the rest of the face).
+                if (short_chord) pinch_at(i, c);
                 continue;
+            }
         }
         if (!duplicate_chord(c)) tmp_.chords.push_back(c);
     }

@@ -1659,6 +1659,37 @@ TEST(Degenerate, ShortChordAcrossTheGapAtASpikesTipPinchesTheFace) {
     });
 }
 
+// Generate_pairs4.py "thin_shell" 16336, the debugger's construction (target 0 and three of B's
+// triangles): a plate 6e-3 across whose two sides nearly coincide, d^2 below 1e-10 of T''s size
+// squared. The last insertion's conic crossed the base of a spike of a domain, 1.1e-3 long and
+// 1.9e-8 across there; the chord was dropped as leaving the face, and the spike, where the old
+// source is nearer (d^2 from 0), went with the rest of the face to the new one (3.6e-11). A short
+// chord that leaves the face between its ends now pinches the face there. The oracle: d by
+// brute force along the spike's middle.
+TEST(Degenerate, ShortChordLeavingTheFaceAcrossASpikesBasePinchesTheFace) {
+    const TriangleMesh A = make_mesh({{0.00022604914561927126, 0.0038035291523214826, 0.003214920556803328},
+                                      {-0.0032574942929462706, -0.0023214192953841836, 0.002975472556740796},
+                                      {0.003264368962426826, 0.002317321366361434, -0.0029711190901028357}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-0.0032574942929462706, -0.0023214192953841836, 0.002975472556740796},
+                                      {-0.001750857019589281, -0.0030570585575561845, -0.00012547737506872942},
+                                      {0.0017473965251850138, 0.003059121327336233, 0.00012328597561564513},
+                                      {0.003264368962426826, 0.002317321366361434, -0.0029711190901028357},
+                                      {-0.003257539606426599, -0.002321392309671173, 0.0029754439501632726},
+                                      {0.0017473512350267772, 0.0030591483323447965, 0.00012325735031978345},
+                                      {-0.0017509022860082045, -0.003057031534680609, -0.0001255060210457116}},
+                                     {{0, 1, 2}, {2, 1, 3}, {4, 5, 6}});
+    // The spike: from its apex to the middle of its base (frame), below the resolution across.
+    const Vec2 apex{0.675647541724, 0.175647554706}, base{0.676416951043, 0.176416972727};
+    expect_constructions_hold(A, B, [&](const TargetSolver& ts) {
+        for (int k = 1; k < 20; ++k) {
+            double poly, d2;
+            ASSERT_TRUE(polynomial_and_d2(ts, B, apex + (k / 20.0) * (base - apex), poly, d2)) << k;
+            EXPECT_NEAR(poly, d2, 1e-13) << k;
+        }
+    });
+}
+
 // Generate_pairs4.py "subdiv_far" 3329 (one target and the five triangles of B around it): a
 // triangle 8.6e3 from the origin against its 1-to-4 subdivision beside an unsplit neighbour, the
 // midpoints rounded in world coordinates. Along the T-junction's seam d peaks at 4.8e-13 on the
