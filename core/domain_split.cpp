@@ -800,7 +800,27 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
         }
     }
     if (s.centre < 0 && point_in_face(s.f, m)) {
-        int vm = add_vertex(m);
+        // Within kCluster of a straight arc of the face the centre is on it: a line from it along
+        // the arc is the arc, as far as the split can tell (boundary_hugs_chord drops its chord),
+        // and a centre off the arc left the other line's chord dangling in the face, cutting
+        // nothing (generate_pairs3.py "hinge_rot" 30869, nearest first: two nearly coplanar planes
+        // whose difference is a line pair centred 4.2e-6 from T''s corner, 1e-11 inside its edge;
+        // the strip between the other line and the edge, where the second plane is nearer, kept the
+        // first, d^2 1.7 times the truth).
+        int vm = -1;
+        for (int h : tmp_.hes) {
+            const Edge& E = edges_[h >> 1];
+            const Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
+            if (!E.curve.straight() || !(segment_distance(m, a, b) <= kCluster)) continue;
+            if (!(norm(m - a) > kSnap && norm(m - b) > kSnap)) continue;
+            const double z = E.z0 + (E.z1 - E.z0) * dot(m - E.curve(E.z0), E.curve(E.z1) - E.curve(E.z0)) /
+                                        dot(E.curve(E.z1) - E.curve(E.z0), E.curve(E.z1) - E.curve(E.z0));
+            if (!(z > E.z0 && z < E.z1)) continue;
+            vm = split_edge(h >> 1, z);
+            collect_half_edges(s.f, tmp_.hes);
+            break;
+        }
+        if (vm < 0) vm = add_vertex(m);
         s.mark_zero(vm);
         tmp_.zverts.push_back(vm);
         s.centre = vm;

@@ -1690,6 +1690,39 @@ TEST(Degenerate, ShortChordLeavingTheFaceAcrossASpikesBasePinchesTheFace) {
     });
 }
 
+// Generate_pairs3.py "hinge_rot" 30869, nearest first (target 3 of B and two of A's triangles, 3.5e5
+// from the origin): the target and a source share an edge, the source's third corner 0.1 off the
+// target's plane; a second source shares its other edge. The two sources' planes differ by a line
+// pair centred 4.2e-6 from T''s corner, 1e-11 inside T''s edge; one line runs along the edge (its
+// chord dropped as the boundary), and the other's chord ended at the centre, a new vertex in the
+// face, dangling: the wedge between that line and T''s edge, where the second source is nearer,
+// kept the first, d^2 1.7 times the truth. A centre within kCluster of a straight arc of the face
+// is now a vertex on that arc. The oracle: d by brute force along the wedge.
+TEST(Degenerate, LinePairCentreBesideAnArcIsOnIt) {
+    const TriangleMesh A = make_mesh({{94484.87116323694, -269612.413381426, 338253.64107140177},
+                                      {86831.33051941836, -256266.35557319171, 289592.339976514},
+                                      {110680.98869799986, -224250.02494809893, 321384.8634014359}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{94484.87116323694, -269612.413381426, 338253.64107140177},
+                                      {86831.33051941836, -256266.35557319171, 289592.339976514},
+                                      {110681.09208257622, -224250.07278628316, 321384.83402060973},
+                                      {60712.953326837625, -233098.29637419645, 326817.16466962127}},
+                                     {{0, 1, 2}, {1, 3, 2}});
+    // Along the wedge from T''s corner (1, 0) to its third corner, 1e-6 t inside the edge at t of
+    // the way (the wedge is about 3e-6 t wide): d^2 there is below 5e-12 of T''s size squared.
+    expect_constructions_hold(A, B, [&](const TargetSolver& ts) {
+        const auto& c = ts.frame().corners;
+        const Vec2 corner{1, 0}, apex = *std::max_element(c.begin(), c.end(), [](Vec2 p, Vec2 q) { return p.y < q.y; });
+        const Vec2 along = apex - corner, inward = Vec2{-along.y, along.x} / norm(along);
+        for (int k = 1; k < 20; ++k) {
+            const double t = k / 20.0;
+            double poly, d2;
+            ASSERT_TRUE(polynomial_and_d2(ts, B, corner + t * (apex - corner) + (1e-6 * t) * inward, poly, d2)) << k;
+            EXPECT_NEAR(poly, d2, 1e-13) << k;
+        }
+    });
+}
+
 // Generate_pairs4.py "subdiv_far" 3329 (one target and the five triangles of B around it): a
 // triangle 8.6e3 from the origin against its 1-to-4 subdivision beside an unsplit neighbour, the
 // midpoints rounded in world coordinates. Along the T-junction's seam d peaks at 4.8e-13 on the
