@@ -331,10 +331,8 @@ private:
     Vec2 out_tangent(int h) const;                   // direction leaving origin(h)
     int loop_crossings(int start, Vec2 p) const;      // ray crossings of one loop (parity: inside)
     int outer_across(int hole, const std::vector<int>& cycles, const std::vector<int>& outers) const;  // a lens's piece
-    int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose, bool dir_stub);
+    int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose);
     bool loose_tangent(int h) const;
-    Vec2 short_secant(int h) const;
-    bool stub(int h) const;
     void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
     void rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids);
     void remove_edge(int e);

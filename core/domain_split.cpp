@@ -103,29 +103,10 @@ int DomainMesh::split_edge(int e, double z) {
 // curve to that) (find_wedge).
 bool DomainMesh::loose_tangent(int h) const {
     const Edge& E = edges_[h >> 1];
-    return (!E.curve.straight() && norm(E.curve((h & 1) ? E.z1 : E.z0) - vertices_[half_[h].origin].p) > kOnCurve) || stub(h);
+    return !E.curve.straight() && norm(E.curve((h & 1) ? E.z1 : E.z0) - vertices_[half_[h].origin].p) > kOnCurve;
 }
 
-// A stub: half-edge h is shorter than kOffCurve and a chord goes on through its far end (a vertex of
-// two arcs). Such is a chord's straight connector to a vertex beside the curve's end, as at a line
-// pair's centre, a vertex up to kOffCurve off the lines (flat_tip): its direction is that of the
-// rounding there, not of the chord (generate_pairs3.py "sliver" 30802: a connector 1.3e-7 long
-// pointed 90 degrees off its chord, and the other line's chord from the centre went into the
-// wrong wedge).
-bool DomainMesh::stub(int h) const {
-    const int n = half_[h].next;
-    return norm(vertices_[target(h)].p - vertices_[half_[h].origin].p) <= kOffCurve && n >= 0 && n != (h ^ 1) &&
-           half_[n ^ 1].next == (h ^ 1);
-}
-
-// The direction half-edge h leaves its origin in, by a point a short way along it: 1e-3 of the
-// arc, or the middle of the arc after a stub.
-Vec2 DomainMesh::short_secant(int h) const {
-    const Vec2 o = vertices_[half_[h].origin].p;
-    return (stub(h) ? he_point(half_[h].next, 0.5) : he_point(h, 1e-3)) - o;
-}
-
-int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose, bool dir_stub) {
+int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose) {
     std::vector<int>& cands = tmp_.wedge_cands;
     cands.clear();
     for (int h : hes)
@@ -139,21 +120,18 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
     // boundary arc beside it, into the wrong wedge (generate_pairs4.py "thin_shell" 14160, nearest
     // first: a lens 6e-6 wide along T''s edge, where an edge of the shell's other side is nearer,
     // left in one piece with the rest, d^2 up to 3 times the truth). Such tangents decide only
-    // by kTangentTie, and a stub's (a connector shorter than kOffCurve) not at all; the rest go to
-    // pass 1, short secants. Pass 2: those tangents to rounding, as a last resort. (Other straight
-    // arcs keep their tangents: at a line pair's centre, a vertex up to kOffCurve off both lines,
-    // a secant along a short one is no direction at all; "perp" 8499.)
+    // by kTangentTie; closer calls go to pass 1, short secants. Pass 2: those tangents to
+    // rounding, as a last resort. (Straight arcs keep their tangents: at a line pair's centre, a
+    // vertex up to kOffCurve off both lines, a secant is no direction at all; "perp" 8499.)
     for (int pass = 0; pass < 3; ++pass) {
         if (pass == 2) ad = std::atan2(dir.y, dir.x);
         for (int hin : cands) {
             int hout = half_[hin].next;
-            // (A stub's tangent says nothing: secants only.)
-            const bool loose = dir_loose || loose_tangent(hout) || loose_tangent(hin ^ 1);
-            const double margin = pass != 0 || !loose ? 1e-12 : dir_stub || stub(hout) || stub(hin ^ 1) ? HUGE_VAL : kTangentTie;
+            const double margin = pass == 0 && (dir_loose || loose_tangent(hout) || loose_tangent(hin ^ 1)) ? kTangentTie : 1e-12;
             Vec2 dout = out_tangent(hout), dback = out_tangent(hin ^ 1);
             if (pass == 1) {  // tangential ties: compare short secants instead of tangents
-                dout = short_secant(hout);
-                dback = short_secant(hin ^ 1);
+                dout = he_point(hout, 1e-3) - vertices_[v].p;
+                dback = he_point(hin ^ 1, 1e-3) - vertices_[v].p;
                 ad = std::atan2(dir2.y, dir2.x);
             }
             double ao = std::atan2(dout.y, dout.x), ab = std::atan2(dback.y, dback.x);
@@ -217,11 +195,11 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
     }
     // Hook the ends into the wedges of `face` at the end vertices.
     auto dir_out = [&](int h) { return out_tangent(h); };
-    auto sec_out = [&](int h) { return short_secant(h); };
+    auto sec_out = [&](int h) { return he_point(h, 1e-3) - vertices_[half_[h].origin].p; };
     int a = verts.front(), b = verts.back();
     // An end at a vertex with no edge yet (the centre of a line pair) becomes the tip of a
     // dangling path, which later paths to the same vertex attach to.
-    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first), loose_tangent(first), stub(first));
+    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first), loose_tangent(first));
     if (hin < 0) {
         half_[first + 1].next = first; half_[first].prev = first + 1;
     } else {
@@ -229,7 +207,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
         half_[hin].next = first; half_[first].prev = hin;
         half_[first + 1].next = hout; half_[hout].prev = first + 1;
     }
-    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1), loose_tangent(last + 1), stub(last + 1));
+    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1), loose_tangent(last + 1));
     if (hin2 < 0) {
         half_[last].next = last + 1; half_[last + 1].prev = last;
     } else {
