@@ -123,6 +123,9 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
     // by kTangentTie; closer calls go to pass 1, short secants. Pass 2: those tangents to
     // rounding, as a last resort. (Straight arcs keep their tangents: at a line pair's centre, a
     // vertex up to kOffCurve off both lines, a secant is no direction at all; "perp" 8499.)
+    // Pass 0 also notes the wedge the direction is nearest to by tangents (the fallback below).
+    int nearest = cands[0];
+    double nearest_off = HUGE_VAL;
     for (int pass = 0; pass < 3; ++pass) {
         if (pass == 2) ad = std::atan2(dir.y, dir.x);
         for (int hin : cands) {
@@ -136,6 +139,10 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
             }
             double ao = std::atan2(dout.y, dout.x), ab = std::atan2(dback.y, dback.x);
             double rd = wrap2pi(ad - ao), rb = wrap2pi(ab - ao);
+            if (pass == 0) {
+                const double off = std::min(kTwoPi - rd, rd - rb);  // past the wedge's start or its end
+                if (off < nearest_off) nearest_off = off, nearest = hin;
+            }
             // Out and back along one direction: the whole turn at the tip of a dangling arc, but
             // between two arcs a tangential tie that only the secants (pass 1) can order (a chord
             // ending where it touches the boundary: pinches_face). So is a wedge all but the whole
@@ -159,17 +166,7 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
     // "parallel_edge" 28995, the paper's order: a line crossing a conic boundary arc at 2.1e-3 rad
     // at a vertex where its chord was cut in two; the second half went into the other wedge, and
     // the strip between the line and T''s edge, where the old source is nearer, was lost.)
-    int best = cands[0];
-    double best_off = HUGE_VAL;
-    const double ad0 = std::atan2(dir.y, dir.x);
-    for (int hin : cands) {
-        const Vec2 dout = out_tangent(half_[hin].next), dback = out_tangent(hin ^ 1);
-        const double ao = std::atan2(dout.y, dout.x), rb = wrap2pi(std::atan2(dback.y, dback.x) - ao);
-        const double rd = wrap2pi(ad0 - ao);
-        const double off = std::min(kTwoPi - rd, rd - rb);  // past the wedge's start or its end
-        if (off < best_off) best_off = off, best = hin;
-    }
-    return best_off < kTangentTie ? best : cands[0];
+    return nearest_off < kTangentTie ? nearest : cands[0];
 }
 
 void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& es, bool closed_new) {
@@ -813,8 +810,8 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
             const Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
             if (!E.curve.straight() || !(segment_distance(m, a, b) <= kCluster)) continue;
             if (!(norm(m - a) > kSnap && norm(m - b) > kSnap)) continue;
-            const double z = E.z0 + (E.z1 - E.z0) * dot(m - E.curve(E.z0), E.curve(E.z1) - E.curve(E.z0)) /
-                                        dot(E.curve(E.z1) - E.curve(E.z0), E.curve(E.z1) - E.curve(E.z0));
+            const Vec2 p0 = E.curve(E.z0), p1 = E.curve(E.z1);
+            const double z = E.z0 + (E.z1 - E.z0) * dot(m - p0, p1 - p0) / norm2(p1 - p0);
             if (!(z > E.z0 && z < E.z1)) continue;
             vm = split_edge(h >> 1, z);
             collect_half_edges(s.f, tmp_.hes);
@@ -930,8 +927,9 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
                 continue;
             }
             if (flat_boundary_edge(s, c.va, c.vb)) continue;
-            if ((short_chord || near_boundary(f, mid, tol)) && boundary_hugs_chord(f, c, tol)) continue;
-            if ((short_chord || near_boundary(f, mid, tol)) && !chord_inside(s, c)) {
+            const bool near = short_chord || near_boundary(f, mid, tol);
+            if (near && boundary_hugs_chord(f, c, tol)) continue;
+            if (near && !chord_inside(s, c)) {
                 // The same gap, where the curve passes outside between the ends (generate_pairs4.py
                 // "thin_shell" 16336, the debugger's construction: a spike 1.1e-3 long whose base,
                 // 1.9e-8 across, the conic crossed; the spike, where the old source is nearer,

@@ -1519,7 +1519,7 @@ TEST(Degenerate, ConicStraightAcrossAFaceIsItsTangentLine) {
     expect_polynomial_is_d2(ts, p, 1e-9);
 }
 
-// Generate_pairs3.py "perpendicular" 23943 (target 0 and two of B's eight triangles), both orders:
+// Generate_pairs3.py "perpendicular" 23943 (target 0 and two of B's eight triangles), each construction:
 // two fins standing on T', one (the second) 1.5e-12 above it and leaning 2.6e-9 rad. Beyond its
 // corner b, the region of its edge bc is a needle between two region lines 7.7e-7 rad apart, up to
 // 7.7e-8 wide, running from the fin's foot towards the first fin, which is nearer past the conic
@@ -1550,7 +1550,7 @@ TEST(Degenerate, ChordShortInItsParameterButNotInThePlaneIsKept) {
     });
 }
 
-// Generate_pairs4.py "thin_shell" 14160 (target 5 and two of B's triangles), both orders: a plate
+// Generate_pairs4.py "thin_shell" 14160 (target 5 and two of B's triangles), each construction: a plate
 // 1.3e-5 thick, one side A, the other B; a triangle of B lies 6.1e-6 under the target (d^2
 // 3.7e-11 over it), another's edge runs along the target's edge. The set where that edge is
 // nearer is a thin ellipse along T''s edge, 6e-6 wide at the middle, its tip at T''s corner; the
