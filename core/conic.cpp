@@ -507,8 +507,18 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     const bool l2_noise = !(std::fabs(l2) > 1e-14);
     const double disc = b1 * b1 - l1 * q.f;
     bool central = !l2_noise && std::fabs(l2) > eps_par * std::fabs(l1);
-    if (!central && !l2_noise && std::fabs(l2) > 1e-14 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2))
-        central = roots_moved(l1, disc, 4 * std::fabs(l2) + 4 * std::fabs(b2)) > 1e-9;
+    // Only where the central form is the more precise near T': l2 is known to ~4 ulps of the
+    // quadratic part (rounding_l2), and its curve near T', about R = |b2 / l2| from the centre,
+    // turns with sqrt(l2 / l1), so it moves by R sqrt(l2 / l1) rounding_l2 / (2 l2) there.
+    // Generate_pairs4.py "thin_shell" 14534, nearest first: two lines 2.8e-4 apart across T' taken
+    // as a line pair crossing 600 away (l2 = -5.2e-14), each 4.2e-7 off the curve near T', where
+    // the parallel lines are off by 7e-10; a sliver 2e-6 wide kept a source 0.5% farther in d^2.
+    if (!central && !l2_noise && std::fabs(l2) > 1e-14 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2)) {
+        const double moved = roots_moved(l1, disc, 4 * std::fabs(l2) + 4 * std::fabs(b2));
+        const double rounding_l2 = 4 * 0x1p-52 * (std::fabs(q.a) + 2 * std::fabs(q.b) + std::fabs(q.c));
+        const double R = std::fabs(b2 / l2) + 2;
+        central = moved > 1e-9 && R * std::sqrt(std::fabs(l2 / l1)) * rounding_l2 / (2 * std::fabs(l2)) < moved;
+    }
     // A centre 1e8 away or more (|b2 / l2|, l1 being ~1): central points near T' are differences of
     // terms that large, off by 1e-8 or more, where the parabola, which drops l2 Y^2, is off by
     // 2 / |b2 / l2| (independent pair "soup" 3055: a hyperbola centred 2e10 away, its points near
@@ -516,7 +526,17 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // becomes the parabola's arms, the near one as accurate).
     if (central && std::fabs(b2) > 1e8 * std::fabs(l2)) central = false;
     if (central) decompose_central(q, l1, l2, e1, e2, b1, b2, out);
-    else decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
+    // A point within k's rounding, where l2 is only central by the roots it moves (below eps_par):
+    // that rounding grows as b2^2 / l2^2, the centre's distance squared, and near T' the parabolic
+    // form, which drops l2 (Y - Yr)^2, is the more precise. Generate_pairs4.py "thin_shell" 16846,
+    // nearest first: an ellipse 1782 by 1.8e-4 centred 1781 away, its arc crossing a strip of T'
+    // 1.8e-4 wide, taken as a point (|k| 3.3e-8 against a tolerance of 4.5e-8): the strip was not
+    // cut, and a sliver along it kept a source 3.7e-11 farther in d^2.
+    if (central && out.type == ConicType::Point && !(std::fabs(l2) > eps_par * std::fabs(l1))) {
+        out.type = ConicType::Empty;
+        decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
+    }
+    if (!central) decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
 }
 
 }  // namespace hlens

@@ -160,13 +160,17 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
 }
 
 // Face P takes the region's quadratic and label (counted and stamped: insert asks whether
-// anything changed, merging which faces did).
+// anything changed, merging which faces did). It keeps P's tie slack: the region won where it is
+// below P's quadratic, which the tie rule may have kept up to that slack above d^2 (a third
+// feature, tied with it, nearer), so the winner is only that close to d^2 too. Generate_pairs4.py
+// "thin_shell_far" 17833, nearest first: an edge's domain kept where another edge, 2e-12 nearer in
+// d^2 (7.8e-10), tied with it; a vertex region then won a piece of it and, its slack cleared,
+// was 1e-12 above d^2 there, past what validate() allowed the new domain.
 void DomainMesh::give_to_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L) {
     const DomainLabel old = faces_[P].label, lab{(int32_t)src.source, reg.kind};
     faces_[P].poly = reg.poly;
     faces_[P].label = lab;
     faces_[P].infinite = false;
-    faces_[P].tie_slack = 0;
     ++relabels_;
     touch_face(P);
     if (L && L->on_relabel) L->on_relabel(P, old, lab);
@@ -183,19 +187,30 @@ void DomainMesh::report_split(const Listener* L, int parent, const std::vector<S
 
 // ---------------------------------------------------------------- merging and dissolving
 
+// An edge may be a loop: a chord between the two feet of one vertex at a thin conic's hairpin
+// (add_chords_of_component) runs from that vertex round the hairpin's tip and back, one arc whose
+// inner side is a cycle of itself alone (its next is itself). Removing it splices only the outer
+// side, and its vertex stays (generate_pairs4.py "f32_export" 15711, target 21 in the paper's
+// order: the general splice linked a live half-edge to the removed loop, and the next split
+// walked a face's loop forever).
 void DomainMesh::remove_edge(int e) {
     touch_edge_faces(e);
     int h = 2 * e, t = 2 * e + 1;
     int hn = half_[h].next, hp = half_[h].prev, tn = half_[t].next, tp = half_[t].prev;
-    if (hn == t && tn == h) {
+    const bool loop = half_[h].origin == half_[t].origin;
+    if ((hn == t || hn == h) && (tn == h || tn == t)) {
         vertices_[half_[h].origin].alive = false;
         vertices_[half_[t].origin].alive = false;
     } else if (hn == t) {  // target of h is the tip of a dangling edge
         half_[hp].next = tn; half_[tn].prev = hp;
-        vertices_[half_[t].origin].alive = false;
+        if (!loop) vertices_[half_[t].origin].alive = false;
     } else if (tn == h) {
         half_[tp].next = hn; half_[hn].prev = tp;
-        vertices_[half_[h].origin].alive = false;
+        if (!loop) vertices_[half_[h].origin].alive = false;
+    } else if (tn == t) {  // a loop whose inner side is itself alone
+        half_[hp].next = hn; half_[hn].prev = hp;
+    } else if (hn == h) {
+        half_[tp].next = tn; half_[tn].prev = tp;
     } else {
         half_[hp].next = tn; half_[tn].prev = hp;
         half_[tp].next = hn; half_[hn].prev = tp;
@@ -324,7 +339,7 @@ void DomainMesh::dissolve_collinear_vertices() {
         if (e1 == e2 || !edges_[e1].curve.straight() || !edges_[e2].curve.straight()) continue;
         if (edges_[e1].kind != edges_[e2].kind) continue;
         int a = half_[h1].origin, b = target(h2);
-        if (a == b) continue;
+        if (a == b || a == (int)v || b == (int)v) continue;  // (a loop edge at v: remove_edge)
         Vec2 pa = vertices_[a].p, pv = vertices_[v].p, pb = vertices_[b].p;
         Vec2 d1 = pv - pa, d2 = pb - pv;
         // Two pieces of one line (their equations agree) with v between their far ends. Angles

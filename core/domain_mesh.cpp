@@ -568,6 +568,8 @@ std::string DomainMesh::validate(double area_tol) const {
         const HalfEdge& H = half_[h];
         if (H.next < 0 || H.prev < 0 || half_[H.next].prev != (int)h || half_[H.prev].next != (int)h)
             return std::snprintf(buf, sizeof buf, "half-edge %zu: next/prev not inverse", h), buf;
+        if (!edges_[H.next >> 1].alive || !edges_[H.prev >> 1].alive)
+            return std::snprintf(buf, sizeof buf, "half-edge %zu: next or prev is a removed edge's", h), buf;
         if (half_[H.next].origin != target((int)h))
             return std::snprintf(buf, sizeof buf, "half-edge %zu: next does not start at its target", h), buf;
         if (half_[H.next].face != H.face)

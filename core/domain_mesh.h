@@ -72,6 +72,7 @@ public:
         ArcKind kind = ArcKind::Conic;
         CurveKind curve_kind = CurveKind::Line;
         bool alive = true;
+        bool connector = false; // a flat tip's straight link from a vertex to its chord's curve
     };
     struct HalfEdge { int origin = -1, next = -1, prev = -1, face = -1; };
     struct Face {
@@ -83,7 +84,8 @@ public:
         double max_value = HUGE_VAL;  // max of poly over the face, from the last update_maxima()
         // How far d^2 may step at this domain's edges because the tie rule kept its quadratic
         // where another one, within the allowance, met it (a merge, or a region that tied): a
-        // bound of their difference over T'. validate() allows it; relabelling clears it.
+        // bound of their difference over T'. validate() allows it, at its edges and against d^2;
+        // a region winning the face keeps it (give_to_region).
         double tie_slack = 0;
     };
     struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0; };
@@ -333,6 +335,7 @@ private:
     int outer_across(int hole, const std::vector<int>& cycles, const std::vector<int>& outers) const;  // a lens's piece
     int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose);
     bool loose_tangent(int h) const;
+    int past_connector(int h) const;
     void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
     void rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids);
     void remove_edge(int e);

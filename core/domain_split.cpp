@@ -106,6 +106,17 @@ bool DomainMesh::loose_tangent(int h) const {
     return !E.curve.straight() && norm(E.curve((h & 1) ? E.z1 : E.z0) - vertices_[half_[h].origin].p) > kOnCurve;
 }
 
+// The arc that half-edge h leads into when h is a flat tip's connector (insert_chords), else h.
+// A connector joins a vertex to its chord's curve up to kCluster away, in any direction: at a line
+// pair's centre (a vertex up to kOffCurve off both lines) it may leave at 90 degrees to its line,
+// and the other line, crossing the first at the centre, went into the wedge on the wrong side of
+// it (generate_pairs3.py "sliver" 30802, to the end: a wedge where a second source is nearer kept
+// the first, d^2 up to 7% high over 0.028 of T'). Its chord's direction orders the wedges there.
+int DomainMesh::past_connector(int h) const {
+    const int n = half_[h].next;
+    return edges_[h >> 1].connector && n >= 0 && n != (h ^ 1) && edges_[n >> 1].alive ? n : h;
+}
+
 int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose) {
     std::vector<int>& cands = tmp_.wedge_cands;
     cands.clear();
@@ -130,11 +141,12 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
         if (pass == 2) ad = std::atan2(dir.y, dir.x);
         for (int hin : cands) {
             int hout = half_[hin].next;
-            const double margin = pass == 0 && (dir_loose || loose_tangent(hout) || loose_tangent(hin ^ 1)) ? kTangentTie : 1e-12;
-            Vec2 dout = out_tangent(hout), dback = out_tangent(hin ^ 1);
+            const int aout = past_connector(hout), aback = past_connector(hin ^ 1);
+            const double margin = pass == 0 && (dir_loose || loose_tangent(aout) || loose_tangent(aback)) ? kTangentTie : 1e-12;
+            Vec2 dout = out_tangent(aout), dback = out_tangent(aback);
             if (pass == 1) {  // tangential ties: compare short secants instead of tangents
-                dout = he_point(hout, 1e-3) - vertices_[v].p;
-                dback = he_point(hin ^ 1, 1e-3) - vertices_[v].p;
+                dout = he_point(aout, 1e-3) - vertices_[v].p;
+                dback = he_point(aback, 1e-3) - vertices_[v].p;
                 ad = std::atan2(dir2.y, dir2.x);
             }
             double ao = std::atan2(dout.y, dout.x), ab = std::atan2(dback.y, dback.x);
@@ -191,12 +203,12 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
         return;
     }
     // Hook the ends into the wedges of `face` at the end vertices.
-    auto dir_out = [&](int h) { return out_tangent(h); };
-    auto sec_out = [&](int h) { return he_point(h, 1e-3) - vertices_[half_[h].origin].p; };
+    auto dir_out = [&](int h) { return out_tangent(past_connector(h)); };
+    auto sec_out = [&](int h) { return he_point(past_connector(h), 1e-3) - vertices_[half_[h].origin].p; };
     int a = verts.front(), b = verts.back();
     // An end at a vertex with no edge yet (the centre of a line pair) becomes the tip of a
     // dangling path, which later paths to the same vertex attach to.
-    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first), loose_tangent(first));
+    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first), loose_tangent(past_connector(first)));
     if (hin < 0) {
         half_[first + 1].next = first; half_[first].prev = first + 1;
     } else {
@@ -204,7 +216,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
         half_[hin].next = first; half_[first].prev = hin;
         half_[first + 1].next = hout; half_[hout].prev = first + 1;
     }
-    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1), loose_tangent(last + 1));
+    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1), loose_tangent(past_connector(last + 1)));
     if (hin2 < 0) {
         half_[last].next = last + 1; half_[last + 1].prev = last;
     } else {
@@ -1150,6 +1162,7 @@ void DomainMesh::insert_chords(SplitCall& s) {
         const Vec2 head = pieces.front().curve(pieces.front().z0), tail = pieces.back().curve(pieces.back().z1);
         if (c.va >= 0 && flat_tip(start, head)) {
             es.push_back(straight_edge(vertices_[start].p, head, kind));
+            edges_[es.back()].connector = true;
             verts.push_back(add_vertex(head));
         }
         for (size_t k = 0; k < pieces.size(); ++k) {
@@ -1160,6 +1173,7 @@ void DomainMesh::insert_chords(SplitCall& s) {
         if (c.va >= 0 && flat_tip(c.vb, tail)) {
             verts.push_back(add_vertex(tail));
             es.push_back(straight_edge(tail, vertices_[c.vb].p, kind));
+            edges_[es.back()].connector = true;
         }
         verts.push_back(c.va >= 0 ? c.vb : start);
         if (c.va < 0 && pieces.size() < 2) { ++stats_.warnings; continue; }

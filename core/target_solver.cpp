@@ -625,13 +625,14 @@ std::string TargetSolver::validate(bool thorough) const {
             // that of the domain's boundary is held to what that allows: the neighbour's quadratic
             // equals d^2 on the true boundary, so they differ by at most the two gradients (the
             // polynomial's, and d^2's, at most 2 d) times the distance; and it may lie that much
-            // farther outside its region. Every other probe is held to 1e-7 relative.
+            // farther outside its region. Every other probe is held to 1e-7 relative, and to the
+            // domain's tie slack (DomainMesh::Face::tie_slack: a tied feature may be that nearer).
             const bool rim = mesh_->near_boundary((int)f, p, 2 * DomainMesh::kVertexTolerance);
             // 2. The polynomial is d^2 there, computed directly.
             const double poly = F[f].poly(p), direct = direct_d2(p);
             const double resolution =
                 rim ? (norm(F[f].poly.gradient(p)) + 2 * std::sqrt(std::max(0.0, direct))) * 2 * DomainMesh::kVertexTolerance : 0.0;
-            if (std::fabs(poly - direct) > 1e-7 * direct + 16 * noise + resolution)
+            if (std::fabs(poly - direct) > 1e-7 * direct + 16 * noise + resolution + F[f].tie_slack)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): polynomial %.12g but d^2 = %.12g at (%.9g, %.9g)", f,
                                      L.source, region_name(L.region), poly, direct, p.x, p.y), buf;
             // 3. The point lies in the region of the label's feature or of one tied with it, up to

@@ -92,6 +92,20 @@ bool polynomial_and_d2(const TargetSolver& ts, const TriangleMesh& B, Vec2 p, do
     return true;
 }
 
+// How many points of an n x n barycentric grid strictly inside T' have a domain polynomial off
+// d^2 (brute force over B) by more than tol (1 + d^2); a point in no domain counts too.
+int grid_points_off_d2(const TargetSolver& ts, const TriangleMesh& B, int n, double tol) {
+    const auto& c = ts.frame().corners;
+    int off = 0;
+    for (int i = 1; i < n; ++i)
+        for (int j = 1; i + j < n; ++j) {
+            const Vec2 p = c[0] + (c[1] - c[0]) * (double(i) / n) + (c[2] - c[0]) * (double(j) / n);
+            double poly, d2;
+            off += !polynomial_and_d2(ts, B, p, poly, d2) || std::abs(poly - d2) > tol * (1 + d2);
+        }
+    return off;
+}
+
 // max over the used vertices of A, and over a barycentric grid on every triangle of A, of the
 // distance to B: both lower bounds of h(A, B).
 void brute_lower_bounds(const TriangleMesh& A, const TriangleMesh& B, double& vertex, double& sampled) {
@@ -1828,5 +1842,120 @@ TEST(Degenerate, OpenTargetIsBoundedByItsSubdivision) {
         // And the crease now closes (each corner's nearest triangle tried for a cut piece): the
         // interval is within the 1e-9 of the diagonal it was 1.8e-4 of.
         EXPECT_LE(r.upper - r.lower, 1e-9 * B.bounds().diagonal()) << mode_name(mode);
+    }
+}
+
+// Generate_pairs3.py "sliver" 30802 (the tetrahedron's face 0 against eight slivers lying in z = 0,
+// to the end): two sources' planes cross the target along a line pair whose centre is a vertex
+// 1e-9 off one line; that line's chord ends on its curve 1.3e-7 from the vertex and is joined to
+// it by a connector pointing 90 degrees off the line. The other line's chord, leaving the centre
+// between the two, went into the wedge on the connector's far side, and a wedge where source 4 is
+// nearer kept source 5 (d^2 up to 7% high over 0.028 of T'). The connector now leads into its
+// chord's direction (DomainMesh::past_connector). The oracle: d by brute force over the slivers at
+// every point of a grid on the target.
+TEST(Degenerate, ConnectorAtALinePairsCentreOrdersItsWedgeByItsChord) {
+    const TriangleMesh B = make_mesh({{1.0, 1.0, 1.0},
+                                      {1.0, -1.0, -1.0},
+                                      {-1.0, 1.0, -1.0},
+                                      {-1.0, -1.0, 1.0}},
+                                     {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
+    const TriangleMesh A = make_mesh({{0.8064650178942536, 0.9983044755093133, 0.0},
+                                      {0.4535241092674549, -0.3478846750573076, 0.0},
+                                      {-0.5045752197874263, 2.291224362646563, 4.826492058432683e-07},
+                                      {-0.6162820922652092, 0.1895815422027225, 0.0},
+                                      {0.3602504633263285, -1.3354514514206555, 0.0},
+                                      {0.5407359107449768, 0.14807115866208997, 1.0488251062550197e-11},
+                                      {-0.038412594720744986, 0.6289344419598906, 0.0},
+                                      {0.6102327806058152, -1.7255922417776217, 0.0},
+                                      {-0.6301394488963856, -1.1605316099566112, 2.4375409136618404e-10},
+                                      {0.7813181169308145, -0.5455473103243011, 0.0},
+                                      {0.24300609751240176, 1.672714759453175, 0.0},
+                                      {-0.030923430328354984, 0.41426396057505566, 3.274232560806168e-13},
+                                      {0.2951644165070313, -0.3372973307519507, 0.0},
+                                      {-1.0673027193160494, 1.3718530633274753, 0.0},
+                                      {-1.5946372061098788, 1.1630836639352622, 1.5488158989527376e-07},
+                                      {-0.48381394498813934, 0.17026176910876556, 0.0},
+                                      {-0.5958839979494828, 1.524732420609408, 0.0},
+                                      {-0.7818829998721271, -1.3671949560450938, 0.0003373352982260098},
+                                      {-0.88395914072753, 0.11914880232675507, 0.0},
+                                      {-0.33546778625678786, 0.25428879996393794, 0.0},
+                                      {-1.1453171778420823, 0.09156858741603913, 3.0565663686190474e-13},
+                                      {0.355283481624737, 0.4214541385778201, 0.0},
+                                      {-0.014283438654749125, -0.8528403278704556, 0.0},
+                                      {0.8454225352447047, 1.3473335481576751, 8.178728675201172e-13}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 17}, {18, 19, 20}, {21, 22, 23}});
+    expect_constructions_hold(B, A, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, A, 60, 1e-9), 0); });
+}
+
+// Generate_pairs4.py "f32_export" 15711 (target 21 of A, the paper's order, against all of B): a
+// chord between the two feet of one vertex at a thin conic's hairpin is an edge from that vertex
+// back to itself, whose inner side is a cycle of itself alone. When the merging removed it,
+// remove_edge's general splice linked a live half-edge to it: validate() now reports that ("next
+// or prev is a removed edge's", after the 7th insertion), and the next split walked a face's loop
+// forever (the construction never ended; paper mode and the statistics ran it too). A loop edge
+// now splices only its outer side. The construction must end with every step valid, and the
+// domains' polynomials must be d^2 by brute force over B at every point of a grid on the target.
+TEST(Degenerate, LoopEdgeAtAHairpinIsRemovedCleanly) {
+    const TriangleMesh A = make_mesh({{-790.9123046479806, 2307.7299788460673, -4264.199158591687},
+                                      {-710.2753829169918, 2350.5738956190967, -4277.602772916986},
+                                      {-665.9897113085838, 2305.791098770425, -4154.3233518488505}},
+                                     {{0, 2, 1}});
+    const TriangleMesh B = make_mesh({{-673.8279418945312, 2437.984130859375, -4414.39892578125},
+                                      {-468.3646240234375, 2479.105712890625, -4317.8134765625},
+                                      {-665.9896850585938, 2305.791015625, -4154.3232421875},
+                                      {-790.9122924804688, 2307.72998046875, -4264.19921875},
+                                      {-754.56103515625, 2395.356689453125, -4400.88232421875},
+                                      {-835.2941284179688, 2352.729248046875, -4387.365234375},
+                                      {-879.6759643554688, 2397.728271484375, -4510.53173828125},
+                                      {-710.275390625, 2350.573974609375, -4277.6025390625},
+                                      {-549.0015258789062, 2436.26171875, -4304.41015625},
+                                      {-960.5052490234375, 2355.317138671875, -4496.90185546875},
+                                      {-782.5932006835938, 2174.454833984375, -4004.689208984375},
+                                      {-827.0712280273438, 2219.67041015625, -4127.74267578125},
+                                      {-746.5304565429688, 2262.730712890625, -4141.03271484375},
+                                      {-621.7040405273438, 2261.00830078125, -4031.0439453125},
+                                      {-952.1861572265625, 2222.042236328125, -4237.39208984375},
+                                      {-585.448974609375, 2348.851318359375, -4167.61376953125},
+                                      {-863.0377807617188, 2131.17822265625, -3991.511962890625},
+                                      {-702.1486206054688, 2217.731689453125, -4017.86669921875},
+                                      {-798.8467407226562, 2440.139404296875, -4524.16162109375},
+                                      {-460.8148498535156, 2347.561767578125, -4057.3984375},
+                                      {-718.0174560546875, 2482.550537109375, -4537.79150390625},
+                                      {-996.7603149414062, 2267.47412109375, -4360.33203125},
+                                      {-916.0272216796875, 2310.1015625, -4373.8486328125},
+                                      {-380.3702697753906, 2390.83837890625, -4070.575927734375},
+                                      {-1041.33447265625, 2312.906005859375, -4483.27197265625},
+                                      {-541.2594604492188, 2304.284912109375, -4044.22119140625},
+                                      {-637.188232421875, 2524.961669921875, -4551.42138671875},
+                                      {-424.367431640625, 2434.971923828125, -4194.19482421875},
+                                      {-907.6119995117188, 2176.610107421875, -4114.4521484375},
+                                      {-871.5492553710938, 2264.885986328125, -4250.79541015625},
+                                      {-593.0948486328125, 2480.61181640625, -4427.91552734375},
+                                      {-504.908203125, 2391.91162109375, -4180.904296875},
+                                      {-556.3589477539062, 2567.372802734375, -4565.05126953125},
+                                      {-629.6384887695312, 2393.417724609375, -4291.00634765625},
+                                      {-512.36181640625, 2523.2392578125, -4441.4326171875}},
+                                     {{17, 13, 2}, {12, 11, 10}, {23, 27, 19}, {31, 15, 25}, {7, 2, 33},
+                                      {34, 30, 8}, {0, 20, 4}, {15, 33, 2}, {26, 30, 32}, {30, 0, 33},
+                                      {15, 2, 13}, {18, 4, 20}, {16, 10, 11}, {22, 14, 29}, {31, 25, 19},
+                                      {8, 1, 34}, {17, 12, 10}, {28, 16, 11}, {32, 30, 34}, {22, 29, 5},
+                                      {27, 1, 31}, {33, 0, 7}, {1, 8, 31}, {29, 3, 5}, {31, 8, 15},
+                                      {14, 28, 29}, {11, 3, 29}, {30, 26, 0}, {7, 4, 3}, {17, 2, 12},
+                                      {4, 7, 0}, {11, 12, 3}, {18, 6, 5}, {18, 5, 4}, {33, 8, 30}, {5, 6, 22},
+                                      {24, 21, 9}, {6, 9, 22}, {28, 11, 29}, {22, 9, 21}, {33, 15, 8},
+                                      {22, 21, 14}, {5, 3, 4}, {7, 3, 12}, {13, 25, 15}, {0, 26, 20},
+                                      {31, 19, 27}, {7, 12, 2}});
+    const VoxelGrid grid(A, B, 1.0, 1);
+    for (int order = 0; order < 3; ++order) {
+        SCOPED_TRACE(order == 0 ? "the paper's order" : order == 1 ? "nearest first" : "the debugger's");
+        TargetSolver ts(grid, 0, 0);
+        if (order == 1) ts.nearest_first();
+        if (order == 2) ts.on_event([](const Event&) {});
+        int steps = 0;
+        while (ts.step()) {
+            ASSERT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";  // (a corrupt mesh may loop)
+            ASSERT_LT(++steps, 200);
+        }
+        EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0);
     }
 }

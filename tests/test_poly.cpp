@@ -276,3 +276,82 @@ TEST(Conic, NoiseEigenvalueOfASmallQuadraticPartMakesNoEllipse) {
         EXPECT_LT(best, 1e-9) << "root (" << root.x << ", " << root.y << ")";
     }
 }
+
+namespace {
+
+// The root of q (long double) on the segment p0 -> p1, where q changes sign, by bisection; and the
+// distance from a point to the nearest of a decomposition's components (through its feet).
+Vec2 root_between(const Quadratic2& q, Vec2 p0, Vec2 p1) {
+    auto value = [&](long double x, long double y) {
+        return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
+    };
+    const bool neg0 = value(p0.x, p0.y) < 0;
+    long double lo = 0, hi = 1;
+    for (int it = 0; it < 80; ++it) {
+        const long double m = (lo + hi) / 2;
+        ((value(p0.x + m * (p1.x - p0.x), p0.y + m * (p1.y - p0.y)) < 0) == neg0 ? lo : hi) = m;
+    }
+    return {(double)(p0.x + lo * (p1.x - p0.x)), (double)(p0.y + lo * (p1.y - p0.y))};
+}
+double distance_to_components(const ConicDecomposition& d, Vec2 p) {
+    double best = HUGE_VAL;
+    for (const CurveComponent& c : d.components) {
+        double feet[3];
+        const int n = c.feet(p, feet);
+        for (int k = 0; k < n; ++k) best = std::min(best, norm(c.at(feet[k]) - p));
+    }
+    return best;
+}
+
+}  // namespace
+
+// A thin ellipse far from T' whose centre's rounding swallows it (generate_pairs4.py "thin_shell"
+// 16846, nearest first, these coefficients): semi-axes 1782 and 1.8e-4, centred 1781 away along
+// the axis whose eigenvalue (1e-14) is only central by the roots it moves. Its k (3.3e-8) lay
+// within the rounding the central form allows it (4.5e-8, growing as the centre's distance
+// squared), so it was taken as a point, and a strip of T' 1.8e-4 wide that it crosses was not
+// cut. Near T' the zero set must pass within 1e-9 of the crossings of q = 0 with segments across
+// the strip, found by bisection on q itself in long double.
+TEST(Conic, FarThinEllipseWithinItsCentresRoundingIsNoPoint) {
+    Quadratic2 q;
+    q.a = 3.2970841246185888e-08; q.b = 0.00018157871777516884; q.c = 1;
+    q.d = -3.2967103715339834e-08; q.e = -0.00018166117580304598; q.f = 3.2963364646851036e-08;
+    auto value = [&](long double x, long double y) {
+        return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
+    };
+    const ConicDecomposition d = decompose_conic(q);
+    ASSERT_FALSE(d.components.empty()) << conic_type_name(d.type);
+    for (double x : {0.2, 0.5, 0.9}) {
+        const double top = 1.81661e-4 - 1.81579e-4 * x;  // the strip's upper side
+        const Vec2 p0{x, 0}, p1{x, 0.99 * top};          // q(p0) > 0 > q(p1)
+        ASSERT_GT(value(p0.x, p0.y), 0) << x;
+        ASSERT_LT(value(p1.x, p1.y), 0) << x;
+        const Vec2 root = root_between(q, p0, p1);
+        EXPECT_LT(distance_to_components(d, root), 1e-9) << "x " << x << " root y " << root.y;
+    }
+}
+
+// Two nearly parallel lines whose quadratic part has a small eigenvalue just above its rounding
+// (generate_pairs4.py "thin_shell" 14534, nearest first, these coefficients: l2 = -5.2e-14 of
+// l1). As a line pair crossing 600 away each line lay 4.2e-7 off the curve near T' (their angle
+// is l2's rounding magnified), and a sliver 2e-6 wide between a line and its chord kept a source
+// 0.5% farther in d^2. The zero set must pass within 1e-9 of the crossings of q = 0 with
+// segments across both lines, found by bisection on q itself in long double.
+TEST(Conic, NearlyParallelLinesCrossingFarAwayStayOnTheirCurveNearT) {
+    Quadratic2 q;
+    q.a = 0.03999999999995231; q.b = 0.20000000000001589; q.c = 1;
+    q.d = -0.080000000027284537; q.e = -0.39999999997276908; q.f = 0.15999998028375473;
+    auto value = [&](long double x, long double y) {
+        return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
+    };
+    const ConicDecomposition d = decompose_conic(q);
+    ASSERT_FALSE(d.components.empty()) << conic_type_name(d.type);
+    for (double x : {0.34, 0.45, 0.54})
+        for (double side : {1.0, -1.0}) {
+            const double y0 = 0.4 - 0.2 * x;                  // between the lines: q < 0
+            const Vec2 p0{x, y0}, p1{x, y0 + side * 3e-4};     // beyond one of them: q > 0
+            ASSERT_LT(value(p0.x, p0.y), 0) << x;
+            ASSERT_GT(value(p1.x, p1.y), 0) << x << " " << side;
+            EXPECT_LT(distance_to_components(d, root_between(q, p0, p1)), 1e-9) << "x " << x << " side " << side;
+        }
+}
