@@ -107,7 +107,7 @@ void DomainMesh::insert_into_face(int F, const SourceProjection& src, const Regi
         } else {
             cut_by_region(reg, L);
         }
-        for (int P : inside) apply_region(P, src, k + 1 == R ? src.regions[leftover_region(P, src, ~0u)] : reg, L);
+        for (int P : inside) apply_region(P, src, k + 1 == R ? src.regions[leftover_region(P, src, ~0u, R - 1)] : reg, L);
     }
 }
 

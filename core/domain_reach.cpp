@@ -92,7 +92,21 @@ void DomainMesh::insert_where_nearer(int F, const SourceProjection& src, const R
         if (k + 1 == R && !passed_over) inside.swap(pending);
         else if (pending.size() == 1 && pending[0] == F && region_box_inside(cached_face_box(F), reg)) inside.swap(pending);
         else cut_by_region(reg, nullptr);
-        for (int P : inside) apply_region(P, src, k + 1 == R ? src.regions[leftover_region(P, src, may_win)] : reg, nullptr);
+        for (int P : inside) apply_region(P, src, k + 1 == R ? src.regions[leftover_region(P, src, may_win, R - 1)] : reg, nullptr);
+    }
+    // Where no region was passed over but the last of all missed F's box, the last that may win
+    // takes what its cut left, as the last of all would: the others' boxes miss F's, so what is
+    // left is a crack between the cuts. Generate_pairs4.py "f32_export" 19111, target 31 of B, the
+    // paper's order: the first source's regions meeting T' were four of seven, the seventh not
+    // among them, and a sliver 8e-8 wide that the cuts left stayed with no source (d^2 infinite)
+    // until the next source won it whole with one region's quadratic, 0.5 where d^2 is 0.125.
+    if (!passed_over && may_win && !pending.empty()) {
+        size_t last = 0;
+        for (size_t k = 0; k < R; ++k)
+            if (may_win & (1u << k)) last = k;
+        inside.clear();
+        inside.swap(pending);
+        for (int P : inside) apply_region(P, src, src.regions[leftover_region(P, src, may_win, last)], nullptr);
     }
     if (passed_over && may_win) claim_cracks(src, may_win);
 }
@@ -126,8 +140,7 @@ bool DomainMesh::long_arc_point(int f, Vec2& out) const {
 // A piece across the last region's line is a cut that failed, no region's: it stays with the last
 // (given to the region deepest at its interior point, such a piece of our stress seed 698,
 // overlapping coplanar sources, made d^2 jump by 2.3e-8 relative across an edge).
-size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned may_win) {
-    const size_t last = src.regions.size() - 1;
+size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned may_win, size_t last) {
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for_each_half_edge(P, [&](int h) {
         const double m = region_margin(src.regions[last], vertices_[half_[h].origin].p);

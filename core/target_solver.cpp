@@ -583,6 +583,10 @@ std::string TargetSolver::validate(bool thorough) const {
     const auto& F = mesh_->faces();
     char buf[320];
     for (size_t f = 1; f < F.size(); ++f) {
+        // 0. Every source's regions tile the plane: once one is inserted, no domain is uncovered.
+        if (F[f].alive && F[f].infinite && !inserted_.empty())
+            return std::snprintf(buf, sizeof buf, "face %zu: no source's domain after %zu insertions (area %g)", f,
+                                 inserted_.size(), mesh_->face_area((int)f)), buf;
         if (!F[f].alive || F[f].infinite) continue;
         const DomainLabel L = F[f].label;
         // 1. The label names a feature of an inserted source whose quadratic is the domain's.

@@ -704,8 +704,9 @@ static double max_coord(const Pair& P) {
 
 // Check 0 (--every-target): checks 1 and 2 open the first, middle and last targets; this runs
 // every target of both sides to the end in the three orders, with the domain mesh's half-edges
-// checked after every insertion. A construction that never ends shows as the child's timeout
-// (generate_pairs4.py "f32_export" 15711: target 21 of 48, none of the three, looped for ever).
+// checked after every insertion, and that no domain is left without a source. A construction
+// that never ends shows as the child's timeout (generate_pairs4.py "f32_export" 15711: target 21
+// of 48, none of the three, looped for ever; 19111: target 31 left a sliver to no source).
 static bool g_every_target = false;
 static void check_every_target(Ctx& C, const VoxelGrid& grid) {
     for (int side = 0; side < 2; ++side)
@@ -717,9 +718,18 @@ static void check_every_target(Ctx& C, const VoxelGrid& grid) {
                     if (order == 1) ts.nearest_first();
                     if (order == 2) ts.on_event([](const Event&) {});
                     while (ts.step()) {
-                        const std::string v = ts.domain_mesh() ? ts.domain_mesh()->validate(1e9) : "";
+                        const DomainMesh* m = ts.domain_mesh();
+                        const std::string v = m ? m->validate(1e9) : "";
                         if (v.rfind("half-edge", 0) == 0) {
                             C.fail("0_every_target_topology", where + fmt(" (%d insertions): ", ts.insertions()) + v);
+                            break;
+                        }
+                        // A source's regions tile the plane: after an insertion every domain has a source.
+                        bool uncovered = false;
+                        for (size_t f = 1; m && f < m->faces().size(); ++f)
+                            uncovered = uncovered || (m->faces()[f].alive && m->faces()[f].infinite);
+                        if (uncovered) {
+                            C.fail("0_every_target_uncovered", where + fmt(" (%d insertions): a domain of no source", ts.insertions()));
                             break;
                         }
                     }
