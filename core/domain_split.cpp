@@ -202,13 +202,16 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
         half_[first + 1].next = last + 1; half_[last + 1].prev = first + 1;
         return;
     }
-    // Hook the ends into the wedges of `face` at the end vertices.
-    auto dir_out = [&](int h) { return out_tangent(past_connector(h)); };
-    auto sec_out = [&](int h) { return he_point(past_connector(h), 1e-3) - vertices_[half_[h].origin].p; };
+    // Hook the ends into the wedges of `face` at the end vertices, each by the path's direction
+    // leaving it (past a flat tip's connector: its chord's).
+    auto wedge_at = [&](int v, int h) {
+        const int along = past_connector(h);
+        return find_wedge(hes, face, v, out_tangent(along), he_point(along, 1e-3) - vertices_[v].p, loose_tangent(along));
+    };
     int a = verts.front(), b = verts.back();
     // An end at a vertex with no edge yet (the centre of a line pair) becomes the tip of a
     // dangling path, which later paths to the same vertex attach to.
-    int hin = find_wedge(hes, face, a, dir_out(first), sec_out(first), loose_tangent(past_connector(first)));
+    int hin = wedge_at(a, first);
     if (hin < 0) {
         half_[first + 1].next = first; half_[first].prev = first + 1;
     } else {
@@ -216,7 +219,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
         half_[hin].next = first; half_[first].prev = hin;
         half_[first + 1].next = hout; half_[hout].prev = first + 1;
     }
-    int hin2 = find_wedge(hes, face, b, dir_out(last + 1), sec_out(last + 1), loose_tangent(past_connector(last + 1)));
+    int hin2 = wedge_at(b, last + 1);
     if (hin2 < 0) {
         half_[last].next = last + 1; half_[last + 1].prev = last;
     } else {

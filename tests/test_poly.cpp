@@ -247,49 +247,20 @@ TEST(Conic, ComposeIsTheQuadraticAlongTheArc) {
     }
 }
 
-// The difference of two nearly parallel vertical planes' quadratics (generate_pairs.py "perp"
-// 5811, these coefficients): a quadratic part 1.5e-8 of the linear part, whose smaller eigenvalue
-// (1e-16) is rounding noise. Taken as an ellipse (semi-axes 7e7 and 9e11), its points near T' were
-// 1.7e-4 off the curve and the split found no chord. The zero set must pass within 1e-9 of the
-// crossings of q = 0 with two segments across T', found by bisection on q itself in long double.
-TEST(Conic, NoiseEigenvalueOfASmallQuadraticPartMakesNoEllipse) {
-    Quadratic2 q;
-    q.a = -2.2120096270346488e-09; q.b = 5.3088229797980289e-09; q.c = -1.2741175526770654e-08;
-    q.d = -0.41666666666666646; q.e = 0.99999999999999989; q.f = 0.41666666666666646;
-    auto value = [&](long double x, long double y) {
-        return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
-    };
-    const ConicDecomposition d = decompose_conic(q);
-    ASSERT_FALSE(d.components.empty());
-    EXPECT_NE(d.type, ConicType::Ellipse);
-    for (auto [p0, p1] : {std::pair<Vec2, Vec2>{{0.5, 0.1}, {1, 0}}, {{0.2, 0.3}, {0.9, -0.2}}}) {
-        long double lo = 0, hi = 1;  // q(p0) > 0 > q(p1)
-        ASSERT_GT(value(p0.x, p0.y), 0);
-        ASSERT_LT(value(p1.x, p1.y), 0);
-        for (int it = 0; it < 80; ++it) {
-            const long double m = (lo + hi) / 2;
-            (value(p0.x + m * (p1.x - p0.x), p0.y + m * (p1.y - p0.y)) > 0 ? lo : hi) = m;
-        }
-        const Vec2 root{(double)(p0.x + lo * (p1.x - p0.x)), (double)(p0.y + lo * (p1.y - p0.y))};
-        double best = HUGE_VAL;
-        for (const CurveComponent& c : d.components) best = std::min(best, norm(c.at(c.param_of(root)) - root));
-        EXPECT_LT(best, 1e-9) << "root (" << root.x << ", " << root.y << ")";
-    }
-}
-
 namespace {
 
-// The root of q (long double) on the segment p0 -> p1, where q changes sign, by bisection; and the
-// distance from a point to the nearest of a decomposition's components (through its feet).
+// q at (x, y) in long double; the root of q on the segment p0 -> p1, where q changes sign, by
+// bisection; and the distance from a point to the nearest of a decomposition's components
+// (through its feet). The oracles of the conic tests below.
+long double q_at(const Quadratic2& q, long double x, long double y) {
+    return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
+}
 Vec2 root_between(const Quadratic2& q, Vec2 p0, Vec2 p1) {
-    auto value = [&](long double x, long double y) {
-        return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
-    };
-    const bool neg0 = value(p0.x, p0.y) < 0;
+    const bool neg0 = q_at(q, p0.x, p0.y) < 0;
     long double lo = 0, hi = 1;
     for (int it = 0; it < 80; ++it) {
         const long double m = (lo + hi) / 2;
-        ((value(p0.x + m * (p1.x - p0.x), p0.y + m * (p1.y - p0.y)) < 0) == neg0 ? lo : hi) = m;
+        ((q_at(q, p0.x + m * (p1.x - p0.x), p0.y + m * (p1.y - p0.y)) < 0) == neg0 ? lo : hi) = m;
     }
     return {(double)(p0.x + lo * (p1.x - p0.x)), (double)(p0.y + lo * (p1.y - p0.y))};
 }
@@ -305,6 +276,29 @@ double distance_to_components(const ConicDecomposition& d, Vec2 p) {
 
 }  // namespace
 
+// The difference of two nearly parallel vertical planes' quadratics (generate_pairs.py "perp"
+// 5811, these coefficients): a quadratic part 1.5e-8 of the linear part, whose smaller eigenvalue
+// (1e-16) is rounding noise. Taken as an ellipse (semi-axes 7e7 and 9e11), its points near T' were
+// 1.7e-4 off the curve and the split found no chord. The zero set must pass within 1e-9 of the
+// crossings of q = 0 with two segments across T', found by bisection on q itself in long double.
+TEST(Conic, NoiseEigenvalueOfASmallQuadraticPartMakesNoEllipse) {
+    Quadratic2 q;
+    q.a = -2.2120096270346488e-09; q.b = 5.3088229797980289e-09; q.c = -1.2741175526770654e-08;
+    q.d = -0.41666666666666646; q.e = 0.99999999999999989; q.f = 0.41666666666666646;
+    const ConicDecomposition d = decompose_conic(q);
+    ASSERT_FALSE(d.components.empty());
+    EXPECT_NE(d.type, ConicType::Ellipse);
+    for (auto [p0, p1] : {std::pair<Vec2, Vec2>{{0.5, 0.1}, {1, 0}}, {{0.2, 0.3}, {0.9, -0.2}}}) {
+        ASSERT_GT(q_at(q, p0.x, p0.y), 0);  // q(p0) > 0 > q(p1)
+        ASSERT_LT(q_at(q, p1.x, p1.y), 0);
+        const Vec2 root = root_between(q, p0, p1);
+        double best = HUGE_VAL;
+        for (const CurveComponent& c : d.components) best = std::min(best, norm(c.at(c.param_of(root)) - root));
+        EXPECT_LT(best, 1e-9) << "root (" << root.x << ", " << root.y << ")";
+    }
+}
+
+
 // A thin ellipse far from T' whose centre's rounding swallows it (generate_pairs4.py "thin_shell"
 // 16846, nearest first, these coefficients): semi-axes 1782 and 1.8e-4, centred 1781 away along
 // the axis whose eigenvalue (1e-14) is only central by the roots it moves. Its k (3.3e-8) lay
@@ -316,16 +310,13 @@ TEST(Conic, FarThinEllipseWithinItsCentresRoundingIsNoPoint) {
     Quadratic2 q;
     q.a = 3.2970841246185888e-08; q.b = 0.00018157871777516884; q.c = 1;
     q.d = -3.2967103715339834e-08; q.e = -0.00018166117580304598; q.f = 3.2963364646851036e-08;
-    auto value = [&](long double x, long double y) {
-        return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
-    };
     const ConicDecomposition d = decompose_conic(q);
     ASSERT_FALSE(d.components.empty()) << conic_type_name(d.type);
     for (double x : {0.2, 0.5, 0.9}) {
         const double top = 1.81661e-4 - 1.81579e-4 * x;  // the strip's upper side
         const Vec2 p0{x, 0}, p1{x, 0.99 * top};          // q(p0) > 0 > q(p1)
-        ASSERT_GT(value(p0.x, p0.y), 0) << x;
-        ASSERT_LT(value(p1.x, p1.y), 0) << x;
+        ASSERT_GT(q_at(q, p0.x, p0.y), 0) << x;
+        ASSERT_LT(q_at(q, p1.x, p1.y), 0) << x;
         const Vec2 root = root_between(q, p0, p1);
         EXPECT_LT(distance_to_components(d, root), 1e-9) << "x " << x << " root y " << root.y;
     }
@@ -341,17 +332,14 @@ TEST(Conic, NearlyParallelLinesCrossingFarAwayStayOnTheirCurveNearT) {
     Quadratic2 q;
     q.a = 0.03999999999995231; q.b = 0.20000000000001589; q.c = 1;
     q.d = -0.080000000027284537; q.e = -0.39999999997276908; q.f = 0.15999998028375473;
-    auto value = [&](long double x, long double y) {
-        return q.a * x * x + 2 * q.b * x * y + q.c * y * y + 2 * q.d * x + 2 * q.e * y + (long double)q.f;
-    };
     const ConicDecomposition d = decompose_conic(q);
     ASSERT_FALSE(d.components.empty()) << conic_type_name(d.type);
     for (double x : {0.34, 0.45, 0.54})
         for (double side : {1.0, -1.0}) {
             const double y0 = 0.4 - 0.2 * x;                  // between the lines: q < 0
             const Vec2 p0{x, y0}, p1{x, y0 + side * 3e-4};     // beyond one of them: q > 0
-            ASSERT_LT(value(p0.x, p0.y), 0) << x;
-            ASSERT_GT(value(p1.x, p1.y), 0) << x << " " << side;
+            ASSERT_LT(q_at(q, p0.x, p0.y), 0) << x;
+            ASSERT_GT(q_at(q, p1.x, p1.y), 0) << x << " " << side;
             EXPECT_LT(distance_to_components(d, root_between(q, p0, p1)), 1e-9) << "x " << x << " side " << side;
         }
 }
