@@ -88,7 +88,7 @@ public:
         // a region winning the face keeps it (give_to_region).
         double tie_slack = 0;
     };
-    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0; };
+    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0; };
 
     // Events a caller may watch while a source is inserted (all optional).
     struct Listener {
@@ -236,6 +236,14 @@ private:
         std::vector<Chord> chords, cand;
         std::vector<std::pair<double, int>> pts;
         std::vector<int> verts, es, wedge_cands;
+        // insert_chords: each chord's path (flat, with offsets), the face's links before them, and
+        // each path end's hook: its wedges and the one taken (rehook_chords retries the others).
+        std::vector<int> path_es, path_verts, path_es_off, path_verts_off, links_before;
+        std::vector<bool> path_closed;
+        std::vector<int> hook_wedges, hook_taken;
+        std::vector<uint64_t> cycle_mark;
+        int hook_count = 0, force_hook = -1, force_wedge = -1;
+        bool recording_hooks = false;
         std::vector<CurveComponent::Piece> arc_pieces;
         std::vector<FaceArc> face_arcs;
         Scratch() = default;
@@ -336,6 +344,10 @@ private:
     int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose);
     bool loose_tangent(int h) const;
     int past_connector(int h) const;
+    int hook_wedge(int hin);
+    bool mixed_cycle(const SplitCall& s);
+    void hook_paths(int face, const std::vector<int>& hes, int force_hook, int force_wedge);
+    void rehook_chords(SplitCall& s);
     void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
     void rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids);
     void remove_edge(int e);

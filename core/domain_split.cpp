@@ -206,7 +206,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
     // leaving it (past a flat tip's connector: its chord's).
     auto wedge_at = [&](int v, int h) {
         const int along = past_connector(h);
-        return find_wedge(hes, face, v, out_tangent(along), he_point(along, 1e-3) - vertices_[v].p, loose_tangent(along));
+        return hook_wedge(find_wedge(hes, face, v, out_tangent(along), he_point(along, 1e-3) - vertices_[v].p, loose_tangent(along)));
     };
     int a = verts.front(), b = verts.back();
     // An end at a vertex with no edge yet (the centre of a line pair) becomes the tip of a
@@ -1149,9 +1149,96 @@ bool DomainMesh::boundary_hugs_chord(int f, const Chord& c, double tol) const {
 // Whether vertex v and its chord's curve end are that far apart.
 bool DomainMesh::flat_tip(int v, Vec2 curve_end) const { return norm(curve_end - vertices_[v].p) > kCluster; }
 
+// insert_chords' hooks of its paths' ends (insert_path): noted while recording, and the one
+// rehook_chords forces replaced by another of find_wedge's candidates (left in tmp_.wedge_cands).
+int DomainMesh::hook_wedge(int hin) {
+    const int k = tmp_.hook_count++;
+    const std::vector<int>& cands = tmp_.wedge_cands;
+    if (tmp_.recording_hooks) {
+        tmp_.hook_wedges.push_back(hin < 0 ? 0 : (int)cands.size());
+        tmp_.hook_taken.push_back(hin < 0 ? -1 : (int)(std::find(cands.begin(), cands.end(), hin) - cands.begin()));
+    }
+    if (k == tmp_.force_hook && hin >= 0 && tmp_.force_wedge < (int)cands.size()) return cands[tmp_.force_wedge];
+    return hin;
+}
+
+// A loop of the face's half-edges, as the chords left them, with an arc well inside each side of
+// the curve: the loop cannot be one piece (the arcs' sides are those at their middles, kMixedSide
+// from the curve where vertices are on it to kOffCurve).
+bool DomainMesh::mixed_cycle(const SplitCall& s) {
+    constexpr double kMixedSide = 1e-6;
+    const std::vector<int>& hes = tmp_.hes;
+    const uint64_t stamp = tmp_.next_stamp(tmp_.cycle_mark, half_.size());
+    for (int h0 : hes) {
+        if (tmp_.cycle_mark[h0] == stamp) continue;
+        double hi = 0, lo = 0, v;
+        int h = h0;
+        size_t guard = 0;
+        do {
+            tmp_.cycle_mark[h] = stamp;
+            if (s.side_of(h, v)) hi = std::max(hi, v), lo = std::min(lo, v);
+            h = half_[h].next;
+        } while (h >= 0 && h != h0 && ++guard <= hes.size());
+        if (hi > kMixedSide && lo < -kMixedSide) return true;
+    }
+    return false;
+}
+
+// Links the recorded chord paths into the face (insert_path), the face's own links first put back
+// as they were before the chords; hook `force_hook` goes into its wedge `force_wedge`.
+void DomainMesh::hook_paths(int face, const std::vector<int>& hes, int force_hook, int force_wedge) {
+    const std::vector<int>& saved = tmp_.links_before;
+    for (size_t i = 0; 2 * i < saved.size(); ++i) {
+        half_[hes[i]].next = saved[2 * i];
+        half_[hes[i]].prev = saved[2 * i + 1];
+    }
+    for (size_t i = saved.size() / 2; i < hes.size(); ++i) half_[hes[i]].next = half_[hes[i]].prev = -1;  // not hooked yet
+    tmp_.hook_count = 0;
+    tmp_.force_hook = force_hook;
+    tmp_.force_wedge = force_wedge;
+    std::vector<int>& verts = tmp_.verts;
+    std::vector<int>& es = tmp_.es;
+    for (size_t p = 0; p + 1 < tmp_.path_es_off.size(); ++p) {
+        es.assign(tmp_.path_es.begin() + tmp_.path_es_off[p], tmp_.path_es.begin() + tmp_.path_es_off[p + 1]);
+        verts.assign(tmp_.path_verts.begin() + tmp_.path_verts_off[p], tmp_.path_verts.begin() + tmp_.path_verts_off[p + 1]);
+        insert_path(face, hes, verts, es, tmp_.path_closed[p]);
+    }
+    tmp_.force_hook = -1;
+}
+
+// Where several boundaries meet within rounding (a fan's apex: arcs leaving a vertex within 4e-4
+// rad of each other, the vertex 8e-9 off the curve), the tangents that order the wedges may put a
+// chord's end in the wrong one, and a loop then runs along both sides of the curve: one piece
+// where there are two (generate_pairs3.py "needle_fan" 35075, nearest first: a strip 4e-6 wide and
+// 0.11 long where a needle's edge is nearer went to the next needle's, d^2 up to 9 times too high).
+// Such a loop is certain; the hooks are then tried in their other wedges, one at a time, and the
+// first linking whose every loop keeps to one side is kept (else the first one is).
+void DomainMesh::rehook_chords(SplitCall& s) {
+    const std::vector<int>& hes = tmp_.hes;
+    for (size_t k = 0; k < tmp_.hook_wedges.size(); ++k)
+        for (int w = 0; w < tmp_.hook_wedges[k]; ++w) {
+            if (w == tmp_.hook_taken[k]) continue;
+            hook_paths(s.f, hes, (int)k, w);
+            if (!mixed_cycle(s)) { ++stats_.rehooks; return; }
+        }
+    hook_paths(s.f, hes, -1, -1);
+}
+
 // 4. Insert the chords, each as a path of well-conditioned arcs.
 void DomainMesh::insert_chords(SplitCall& s) {
     std::vector<int>& hes = tmp_.hes;
+    const size_t boundary = hes.size();
+    tmp_.links_before.resize(2 * boundary);
+    for (size_t i = 0; i < boundary; ++i) {
+        tmp_.links_before[2 * i] = half_[hes[i]].next;
+        tmp_.links_before[2 * i + 1] = half_[hes[i]].prev;
+    }
+    tmp_.path_es.clear(); tmp_.path_verts.clear(); tmp_.path_closed.clear();
+    tmp_.path_es_off.assign(1, 0); tmp_.path_verts_off.assign(1, 0);
+    tmp_.hook_wedges.clear(); tmp_.hook_taken.clear();
+    tmp_.hook_count = 0;
+    tmp_.force_hook = -1;
+    tmp_.recording_hooks = true;
     ArcKind kind = s.line_like && s.g_linear ? ArcKind::RegionBoundary : ArcKind::Conic;
     for (const Chord& c : tmp_.chords) {
         std::vector<CurveComponent::Piece>& pieces = tmp_.arc_pieces;
@@ -1181,9 +1268,16 @@ void DomainMesh::insert_chords(SplitCall& s) {
         verts.push_back(c.va >= 0 ? c.vb : start);
         if (c.va < 0 && pieces.size() < 2) { ++stats_.warnings; continue; }
         for (int e : es) { hes.push_back(2 * e); hes.push_back(2 * e + 1); }
+        tmp_.path_es.insert(tmp_.path_es.end(), es.begin(), es.end());
+        tmp_.path_verts.insert(tmp_.path_verts.end(), verts.begin(), verts.end());
+        tmp_.path_es_off.push_back((int)tmp_.path_es.size());
+        tmp_.path_verts_off.push_back((int)tmp_.path_verts.size());
+        tmp_.path_closed.push_back(c.va < 0);
         insert_path(s.f, hes, verts, es, c.va < 0);
         ++stats_.splits;
     }
+    tmp_.recording_hooks = false;
+    if (mixed_cycle(s)) rehook_chords(s);
 }
 
 // 5. The face's half-edges now form several loops: one face per outer loop, each given its side.

@@ -2002,3 +2002,48 @@ TEST(Degenerate, CrackLeftByTheFirstSourcesCutsGoesToItsLastRegion) {
                                       {17, 22, 21}, {17, 18, 22}, {18, 23, 22}, {18, 19, 23}, {19, 24, 23}});
     expect_constructions_hold(T, A, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, A, 40, 1e-9), 0); });
 }
+
+// Generate_pairs3.py "needle_fan" 35075 (a triangle of the disc around the fan's apex, nearest
+// first): twenty needles in T''s plane fanned from one apex 4e-4 rad apart. Where the hyperbola on
+// which two needles' edges are as near crosses a needle's edge strip, its chords meet the strip's
+// sides at the apex's cluster (arcs leaving a vertex within 4e-4 rad of each other, the vertex
+// 8e-9 off the curve): the curve's tangent there put the long chord's end into the wedge on the
+// wrong side of the short one, and one loop ran along both sides of the curve. The strip (4e-6
+// wide, 0.11 long) where needle 4's edge is nearer went whole to needle 8's (d^2 up to 9 times the
+// truth, until a later needle took it). A loop with arcs well on both sides of the curve is now
+// re-hooked (DomainMesh::rehook_chords). The oracle: validate() after every insertion (d^2
+// continuous across every edge, each domain's polynomial d^2 by brute force at interior points),
+// and d^2 by brute force over the needles on a grid at the end.
+TEST(Degenerate, ChordsAtAFansApexKeepToTheirSideOfTheCurve) {
+    const TriangleMesh T = make_mesh({{0.26901235219540665, 0.07285130414968807, 0.0},
+                                      {-0.9944348306008733, 0.10535353666494687, 0.0},
+                                      {-0.9076812152624083, -0.41966035249920575, 0.0}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0.850607995352486, 0.5258003787012949, 0.0},
+                                      {0.8513181280539567, 0.5246498306934892, 0.0},
+                                      {0.8507173477798331, 0.5256234338254399, 0.0},
+                                      {0.8508266633988162, 0.5254464662072031, 0.0},
+                                      {0.8505533053371546, 0.5258888426084368, 0.0},
+                                      {0.8512635576965377, 0.5247383684635929, 0.0},
+                                      {0.8510997913786467, 0.5250039477139425, 0.0},
+                                      {0.8509359422047057, 0.5252694758542417, 0.0},
+                                      {0.8508813074036933, 0.5253579738720844, 0.0},
+                                      {0.8503891800916275, 0.5261542001952372, 0.0},
+                                      {0.8504986061215064, 0.5259773008271124, 0.0},
+                                      {0.8507720101906658, 0.5255349528586407, 0.0},
+                                      {0.8510451841927732, 0.5250924627742134, 0.0},
+                                      {0.8506626761669094, 0.5257119091066437, 0.0},
+                                      {0.8509905678012627, 0.5251809721546322, 0.0},
+                                      {0.8511543893582922, 0.5249154269747771, 0.0},
+                                      {0.85033445327858, 0.526242641342773, 0.0},
+                                      {0.8502797172675833, 0.5263310767980155, 0.0},
+                                      {0.0, 0.0, 0.0},
+                                      {0.8512089781311194, 0.5248269005576748, 0.0},
+                                      {0.8513726892027862, 0.5245612872483215, 0.0},
+                                      {0.8504438977061335, 0.5260657533563647, 0.0}},
+                                     {{18, 2, 13}, {14, 7, 18}, {18, 19, 15}, {12, 18, 6}, {2, 18, 11}, {21, 18, 10},
+                                      {16, 17, 18}, {13, 0, 18}, {8, 3, 18}, {18, 7, 8}, {19, 18, 5}, {21, 9, 18},
+                                      {18, 20, 1}, {18, 4, 10}, {9, 16, 18}, {18, 0, 4}, {5, 18, 1}, {18, 12, 14},
+                                      {18, 3, 11}, {6, 18, 15}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}

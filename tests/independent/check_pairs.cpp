@@ -6,6 +6,7 @@
 // for more seeds, e.g.
 // `build/bin/hlens_check_pairs 0 28000`. DUMP=prefix writes each pair as prefix_a.obj and prefix_b.obj.
 // Usage: hlens_check_pairs SEED_FROM SEED_TO [KIND_FILTER] [--no-fork] [--verbose] [--every-target]
+//        [--thorough] (--every-target with validate(true) after every insertion)
 //        hlens_check_pairs --pairs DIR [...]: every DIR/NAME_a.obj, DIR/NAME_b.obj (another
 //        generator's pairs, e.g. generate_pairs.py), numbered in name order as "seed"
 //   kind of seed = kinds[seed % NKINDS]; the RNG is std::mt19937(seed).
@@ -707,7 +708,10 @@ static double max_coord(const Pair& P) {
 // checked after every insertion, and that no domain is left without a source. A construction
 // that never ends shows as the child's timeout (generate_pairs4.py "f32_export" 15711: target 21
 // of 48, none of the three, looped for ever; 19111: target 31 left a sliver to no source).
-static bool g_every_target = false;
+// --thorough adds TargetSolver::validate(true) after every insertion of every target (domain
+// polynomials against brute force, d^2 continuous across edges): the transient states that checks
+// 1 and 2 see on three targets only (generate_pairs4.py "quantized" 19453: target 10 of 48).
+static bool g_every_target = false, g_thorough = false;
 static void check_every_target(Ctx& C, const VoxelGrid& grid) {
     for (int side = 0; side < 2; ++side)
         for (uint32_t t = 0; t < grid.mesh(side).num_triangles(); ++t)
@@ -730,6 +734,11 @@ static void check_every_target(Ctx& C, const VoxelGrid& grid) {
                             uncovered = uncovered || (m->faces()[f].alive && m->faces()[f].infinite);
                         if (uncovered) {
                             C.fail("0_every_target_uncovered", where + fmt(" (%d insertions): a domain of no source", ts.insertions()));
+                            break;
+                        }
+                        const std::string full = g_thorough ? ts.validate(true) : "";
+                        if (!full.empty()) {
+                            C.fail("0_every_target_validate", where + fmt(" (%d insertions): ", ts.insertions()) + full);
                             break;
                         }
                     }
@@ -857,7 +866,7 @@ static std::vector<std::string> pair_names(const std::string& dir) {
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s SEED_FROM SEED_TO [KIND] [--no-fork] [--verbose] [--budget N] [--timeout S] [--every-target]\n"
+        std::fprintf(stderr, "usage: %s SEED_FROM SEED_TO [KIND] [--no-fork] [--verbose] [--budget N] [--timeout S] [--every-target] [--thorough]\n"
                              "       %s --pairs DIR [same options]  (DIR/NAME_a.obj, DIR/NAME_b.obj)\n kinds:", argv[0], argv[0]);
         for (int i = 0; i < NKINDS; ++i) std::fprintf(stderr, " %s", kKinds[i]);
         std::fprintf(stderr, "\n");
@@ -879,6 +888,7 @@ int main(int argc, char** argv) {
         else if (a == "--budget" && i + 1 < argc) budget = std::atol(argv[++i]);
         else if (a == "--timeout" && i + 1 < argc) timeout = std::atoi(argv[++i]);
         else if (a == "--every-target") g_every_target = true;
+        else if (a == "--thorough") g_every_target = g_thorough = true;
         else filter = a;
     }
     for (unsigned seed = from; seed < to; ++seed) {
