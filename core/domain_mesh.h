@@ -88,7 +88,7 @@ public:
         // a region winning the face keeps it (give_to_region).
         double tie_slack = 0;
     };
-    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0; };
+    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0; };
 
     // Events a caller may watch while a source is inserted (all optional).
     struct Listener {
@@ -344,6 +344,8 @@ private:
     int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose);
     bool loose_tangent(int h) const;
     int past_connector(int h) const;
+    bool sides_part_at(const SplitCall& s, int va, int vb) const;
+    Chord straight_chord(int va, int vb) const;
     int hook_wedge(int hin);
     bool mixed_cycle(const SplitCall& s);
     void hook_paths(int face, const std::vector<int>& hes, int force_hook, int force_wedge);

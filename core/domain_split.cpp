@@ -33,6 +33,9 @@ constexpr double kNearlyFull = 1e-4;  // radians short of a whole turn (find_wed
 // Tangents decide a wedge only with this margin (radians); closer calls go to the secants first
 // (find_wedge).
 constexpr double kTangentTie = 1e-2;
+// An arc whose middle is this far from the curve is certainly on its side (mixed_cycle,
+// sides_part_at): vertices count as on the curve up to kOffCurve.
+constexpr double kMixedSide = 1e-6;
 
 // g's tangent line at p: g(p) + grad g(p) . (x - p).
 Quadratic2 tangent_line(const Quadratic2& g, Vec2 p) {
@@ -889,6 +892,21 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             if (v == c.vb) v = c.va;
         if (s.centre == c.vb) s.centre = c.va;
     };
+    // Two vertices the curve crosses the face between, too close for its chord (or the chord, no
+    // more precise than they are apart, outside the face): where the face's loop passes each once
+    // and its sides part there (sides_part_at), the straight chord between them cuts it; else it
+    // may be two lobes joined there (pinch_at). The chord moves nothing: pinched, a lobe 0.125
+    // long and 7e-9 wide whose vertex moved 1e-8 onto the other turned inside out, and the rebuilt
+    // face kept it as a hole, on the wrong side (generate_pairs5.py "sliver_strip" 794, nearest
+    // first: d^2 7.5 times the truth over it).
+    auto pinch_or_straight = [&](size_t i, const Chord& c, bool pinch = true) {
+        if (sides_part_at(s, c.va, c.vb)) {
+            tmp_.chords.push_back(straight_chord(c.va, c.vb));
+            ++stats_.tiny_chords;
+        } else if (pinch) {
+            pinch_at(i, c);
+        }
+    };
     for (size_t i = 0; i < cand.size(); ++i) {
         const Chord c = cand[i];
         // From a vertex back to itself: a loop no wider than the 1e-7 within which the curve
@@ -903,7 +921,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
         // that are no such sliver, the two vertices are that point, and the face is two lobes
         // joined there (pinch_face).
         if (c.va >= 0 && c.va != c.vb && !(norm(vertices_[c.va].p - vertices_[c.vb].p) > kTinyChord)) {
-            pinch_at(i, c);
+            pinch_or_straight(i, c);
             continue;
         }
         // No length in the curve's parameter and none in the plane: the same point twice. The
@@ -911,7 +929,10 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
         // a needle 7.7e-8 wide between parameters 5.4e-13 apart (generate_pairs3.py
         // "perpendicular" 23943: that chord dropped, the whole needle kept the farther source,
         // d^2 0.0178 where the truth is 0.0020).
-        if (c.va >= 0 && !(c.t1 - c.t0 > 1e-12) && !(norm(comp.at(c.t1) - comp.at(c.t0)) > kTinyChord)) continue;
+        if (c.va >= 0 && !(c.t1 - c.t0 > 1e-12) && !(norm(comp.at(c.t1) - comp.at(c.t0)) > kTinyChord)) {
+            if (c.va != c.vb) pinch_or_straight(i, c, false);  // two vertices there, each side its own
+            continue;
+        }
         Vec2 mid = comp.at(0.5 * (c.t0 + c.t1));
         if (c.va >= 0) {
             // A piece along the face's boundary is already there (its ends one point, or its middle
@@ -938,7 +959,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
                 // face, its two sides 1.6e-8 apart; the chord to one side of the tip and the chord
                 // from the other were left in different loops, bridged them, and the face stayed
                 // whole across the line: d^2 4.3 times the truth over 0.0037 of T'.)
-                if (short_chord) pinch_at(i, c);
+                if (short_chord) pinch_or_straight(i, c);
                 continue;
             }
             if (flat_boundary_edge(s, c.va, c.vb)) continue;
@@ -949,7 +970,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
                 // "thin_shell" 16336, the debugger's construction: a spike 1.1e-3 long whose base,
                 // 1.9e-8 across, the conic crossed; the spike, where the old source is nearer,
                 // went with the rest of the face).
-                if (short_chord) pinch_at(i, c);
+                if (short_chord) pinch_or_straight(i, c);
                 continue;
             }
         }
@@ -971,6 +992,54 @@ bool DomainMesh::short_chord_inside(int f, const Chord& c, Vec2 mid) const {
     const Vec2 pa = vertices_[c.va].p, pb = vertices_[c.vb].p, m = 0.5 * (pa + pb);
     const double len = norm(pb - pa), off = std::max(off_component(c.comp, pa), off_component(c.comp, pb));
     return len <= kCluster && off >= 0.1 * len && off <= len && norm(mid - m) <= 2 * off && point_in_face(f, m);
+}
+
+// The face's one loop passes va and vb once each, and its arcs from va to vb lie on one side of
+// the curve and those from vb to va on the other, each side certain (an arc farther from the
+// curve than rounding and the vertices on it allow, none across it): however close va and vb,
+// the face is two pieces that meet between them.
+// (Generate_pairs4.py "hole_fill" 11525, nearest first: a strip along T''s edge 3e-11 wide and
+// 0.86 long, which the curve crosses between two vertices 4.5e-12 apart, no chord that short and
+// no pinch (neither half is wider than the resolution); kept whole on the side of its farthest
+// arc, by 3e-4 of 0.43, half of it went to a source up to 0.73 farther in d^2 where d^2 is 1e-7.)
+bool DomainMesh::sides_part_at(const SplitCall& s, int va, int vb) const {
+    int ha = -1, hb = -1, guard = 0;
+    if (faces_[s.f].loops.size() != 1) return false;
+    const int start = faces_[s.f].loops[0];
+    int h = start;
+    do {
+        if (half_[h].origin == va) { if (ha >= 0) return false; ha = h; }
+        if (half_[h].origin == vb) { if (hb >= 0) return false; hb = h; }
+        h = half_[h].next;
+    } while (h != start && ++guard < 1000000);
+    if (ha < 0 || hb < 0) return false;
+    // An arc's middle lies on the wrong side of the curve by no more than the vertices counted on
+    // the curve lie off it (by g; arcs are split where g changes sign, so only an arc ending at
+    // such a vertex can cross it), nor than g's rounding (kZero over the gradient's floor, 1e-11):
+    // a needle's tip 2.5e-12 tall has arcs 3e-9 and 1.2e-8 on either side, its vertices on the
+    // curve to 1e-16 (generate_pairs5.py "huge_tiny" 2561).
+    double off = 0;
+    for (int v : tmp_.zero_list) {
+        const Vec2 p = vertices_[v].p;
+        off = std::max(off, std::fabs(s.g(p)) / std::max(norm(s.g.gradient(p)), 1e-3));
+    }
+    const double certain = std::min(kMixedSide, std::max(4 * off, 1e-10));
+    auto side = [&](int from, int to) {  // the side of the arcs from `from` to vertex `to`, else 0
+        double hi = 0, lo = 0, v;
+        for (int k = from; half_[k].origin != to; k = half_[k].next)
+            if (s.side_of(k, v)) hi = std::max(hi, v), lo = std::min(lo, v);
+        return hi > certain && lo >= 0 ? 1 : (lo < -certain && hi <= 0 ? -1 : 0);
+    };
+    const int a = side(ha, vb), b = side(hb, va);
+    return a != 0 && b == -a;
+}
+
+// The straight chord from va to vb (sides_part_at): a segment shorter than kTinyChord, on the
+// curve as far as the curve can be placed there.
+DomainMesh::Chord DomainMesh::straight_chord(int va, int vb) const {
+    const Vec2 pa = vertices_[va].p, pb = vertices_[vb].p;
+    const CurveComponent line = line_component(pa, pb - pa);
+    return {line, line.param_of(pa), line.param_of(pb), va, vb};
 }
 
 // The chord's arc starts at the foot, not at the vertex: a foot outside the face would put the arc,
@@ -1166,7 +1235,6 @@ int DomainMesh::hook_wedge(int hin) {
 // the curve: the loop cannot be one piece (the arcs' sides are those at their middles, kMixedSide
 // from the curve where vertices are on it to kOffCurve).
 bool DomainMesh::mixed_cycle(const SplitCall& s) {
-    constexpr double kMixedSide = 1e-6;
     const std::vector<int>& hes = tmp_.hes;
     const uint64_t stamp = tmp_.next_stamp(tmp_.cycle_mark, half_.size());
     for (int h0 : hes) {

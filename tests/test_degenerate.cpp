@@ -2047,3 +2047,98 @@ TEST(Degenerate, ChordsAtAFansApexKeepToTheirSideOfTheCurve) {
                                       {18, 3, 11}, {6, 18, 15}});
     expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
 }
+
+// Generate_pairs4.py "hole_fill" 11525 (target 15 of B against three of A's triangles, nearest
+// first): a domain along T''s long edge 3e-11 wide and 0.86 long, which the next source's conic
+// crosses between two vertices 4.5e-12 apart (on T''s edge and on the strip's other side): no chord
+// that short, no pinch (neither part wider than the resolution), so the strip stayed whole on the
+// side of its farthest arc, and half of it went to a source whose d^2 there is up to 0.73 where the
+// truth is 1e-7. The face's loop passes each vertex once and its arcs keep to one side between
+// them: a straight chord now joins them (DomainMesh::sides_part_at). The oracle: validate() after
+// every insertion, and d^2 by brute force over the sources on a grid at the end.
+TEST(Degenerate, StripCrossedBetweenTwoVerticesCloserThanAChordIsCut) {
+    const TriangleMesh T = make_mesh({{0.0014529474164980162, 0.0010458794088679584, -0.010494367057304532},
+                                      {0.005223239621163373, 0.006649659062395023, 0.00646811116789574},
+                                      {-0.0014792358811749093, -0.0010238585106709202, 0.01049286590138329}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0.004280056815820213, 0.0032038197661535335, -0.03148724489944019},
+                                      {0.0014529474164980162, 0.0010458794088679584, -0.010494367057304532},
+                                      {0.008102872642934798, 0.00876347839331416, -0.014522004189222188},
+                                      {-0.0014792358811749093, -0.0010238585106709202, 0.01049286590138329},
+                                      {0.005223239621163373, 0.006649659062395023, 0.00646811116789574},
+                                      {0.01192568847004938, 0.014323137020474792, 0.0024432365209958165},
+                                      {0.0022384793941366632, 0.004623962939250225, 0.02745234181474109},
+                                      {0.008993531825828729, 0.012253438715922087, 0.023430589393096016}},
+                                     {{0, 2, 1}, {3, 4, 6}, {4, 5, 7}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
+
+// Generate_pairs5.py "sliver_strip" 794 (target 0 of A against three of B's triangles, in every
+// order): the conic crosses a thin lobe of a domain (0.125 long, 7e-9 wide) at its base, between
+// two vertices 1e-8 apart, and the face was pinched there, one vertex moved onto the other: the
+// lobe turned inside out and the rebuilt face kept it as a hole, on the wrong side (d^2 7.5 times
+// the truth there). Where the face's loop passes each vertex once and the arcs on either side of
+// them keep to their side of the curve, the straight chord between them now cuts the face, and
+// nothing moves (DomainMesh::sides_part_at). The oracle: validate() after every insertion, and
+// d^2 by brute force over the sources on a grid at the end.
+TEST(Degenerate, LobeCutAtItsBaseIsNotTurnedInsideOut) {
+    const TriangleMesh T = make_mesh({{-4.0025189979107125e-06, -5.631991171300558e-06, -2.1115324043117008e-06},
+                                      {-5.1405169805686746e-06, -1.7426618515433598e-06, 5.092578409970474e-06},
+                                      {3.022092900812974e-06, -1.764046478586332e-06, 6.393530835161678e-06}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-5.274543133280143e-07, -4.12861543809483e-06, 2.3675853397099435e-06},
+                                      {-5.906764234756788e-07, -3.912541586997208e-06, 2.767813718281175e-06},
+                                      {-4.958432558932293e-07, -4.236652363649826e-06, 2.167471150800615e-06},
+                                      {-5.590653660408937e-07, -4.020578512552203e-06, 2.5676995293718473e-06},
+                                      {-4.039760262689857e-06, -6.062587784451942e-06, -1.8849462800267458e-06},
+                                      {-5.177758245347819e-06, -2.173258464694744e-06, 5.319164534255428e-06},
+                                      {-5.067536048824619e-06, -2.5499642392067215e-06, 4.621401521833114e-06}},
+                                     {{0, 3, 2}, {0, 1, 3}, {4, 5, 6}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
+
+// Generate_pairs5.py "sliver_strip" 7790 (target 2 of A against three of B's triangles, in every
+// order): a domain's sliver 0.5 long and 4e-8 wide, which the conic crosses between two vertices
+// 1e-8 apart, its curve as decomposed 3e-9 off both and passing outside the sliver between them:
+// the chord was dropped, the sliver stayed whole with the old source, and where the new one is
+// nearer d^2 was up to 5 times the truth. Its sides part there: the straight chord between the
+// two vertices now cuts it (DomainMesh::sides_part_at). The oracle: validate() after every
+// insertion, and d^2 by brute force over the sources on a grid at the end.
+TEST(Degenerate, SliverCrossedWhereItsCurveRunsOutsideIsCutStraight) {
+    const TriangleMesh T = make_mesh({{854.0850354341028, 466.0880596426476, -159.6725285173509},
+                                      {949.8912431216271, 731.2471694373725, 213.49715385145987},
+                                      {-726.34342518407, -112.54257991634778, 657.2321050090986}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{70.96756125001815, 196.41415540349993, 276.42198693985983},
+                                      {106.45134187502721, 294.62123310524987, 414.63298040978975},
+                                      {88.70944549057238, 245.51769203129643, 345.5274868133435},
+                                      {124.19322611558144, 343.7247697330464, 483.7384802832734},
+                                      {658.5118585909054, 241.09609981624806, -340.3769306360206},
+                                      {977.8658842159871, 1124.9597991319977, 903.5220105933487},
+                                      {733.2515669112884, 447.9502943402107, -49.262226756096375}},
+                                     {{0, 1, 2}, {1, 3, 2}, {4, 5, 6}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
+
+// Generate_pairs5.py "huge_tiny" 2561 (target 0 of B against two of A's triangles): a needle
+// target 2.2e4 long whose tip is 2.5e-12 of it tall; a region line cuts the tip off, and the
+// next curve crosses that tip between two vertices 3e-11 apart, its arcs 3e-9 and 1.2e-8 (of
+// T') on either side of the curve. Sides that close to the curve were not certain (1e-6, what
+// vertices up to kOffCurve off the curve allow), so the tip stayed whole with the farther
+// source, d^2 9e-12 where it is 0. Certain now means farther than rounding and the split's
+// vertices on the curve allow (here 1e-10). The oracle: validate() after every insertion
+// (polynomials against brute-force d^2 at interior points), and d^2 on a grid at the end.
+TEST(Degenerate, NeedleTipCutWhereItsSidesPartByLessThanTheVertexTolerance) {
+    const TriangleMesh T = make_mesh({{0.0, 0.0, -32768.0},
+                                      {-21956.961548609346, 0.0, -24323.520788588372},
+                                      {-21956.98587211916, 0.0, -24323.49883161466}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-0.10884081470633866, 0.0, -32767.824502402207},
+                                      {-0.10884081470633866, 0.0, -32768.0381177082},
+                                      {-0.322456120703641, 0.0, -32767.824502402207},
+                                      {0.0, 0.0, -32768.0},
+                                      {-0.13181437966366066, 0.1740563406943475, -32768.259427426},
+                                      {-0.345429685660963, 0.1740563406943475, -32768.04581212}},
+                                     {{0, 1, 2}, {3, 4, 5}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
