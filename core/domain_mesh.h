@@ -345,7 +345,7 @@ private:
     bool loose_tangent(int h) const;
     int past_connector(int h) const;
     bool sides_part_at(const SplitCall& s, int va, int vb) const;
-    Chord straight_chord(int va, int vb) const;
+    bool straight_chord(int va, int vb, Chord& out) const;
     int hook_wedge(int hin);
     bool mixed_cycle(const SplitCall& s);
     void hook_paths(int face, const std::vector<int>& hes, int force_hook, int force_wedge);

@@ -900,8 +900,9 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
     // face kept it as a hole, on the wrong side (generate_pairs5.py "sliver_strip" 794, nearest
     // first: d^2 7.5 times the truth over it).
     auto pinch_or_straight = [&](size_t i, const Chord& c, bool pinch = true) {
-        if (sides_part_at(s, c.va, c.vb)) {
-            tmp_.chords.push_back(straight_chord(c.va, c.vb));
+        Chord straight;
+        if (straight_chord(c.va, c.vb, straight) && sides_part_at(s, c.va, c.vb)) {
+            tmp_.chords.push_back(straight);
             ++stats_.tiny_chords;
         } else if (pinch) {
             pinch_at(i, c);
@@ -1034,12 +1035,15 @@ bool DomainMesh::sides_part_at(const SplitCall& s, int va, int vb) const {
     return a != 0 && b == -a;
 }
 
-// The straight chord from va to vb (sides_part_at): a segment shorter than kTinyChord, on the
-// curve as far as the curve can be placed there.
-DomainMesh::Chord DomainMesh::straight_chord(int va, int vb) const {
+// The straight chord from va to vb (sides_part_at): a segment as short as 1e-13, on the curve as
+// far as the curve can be placed there; none where the two are one point, or so near that their
+// parameters along it come out in the wrong order.
+bool DomainMesh::straight_chord(int va, int vb, Chord& out) const {
     const Vec2 pa = vertices_[va].p, pb = vertices_[vb].p;
+    if (!(norm(pb - pa) > 0)) return false;
     const CurveComponent line = line_component(pa, pb - pa);
-    return {line, line.param_of(pa), line.param_of(pb), va, vb};
+    out = {line, line.param_of(pa), line.param_of(pb), va, vb};
+    return out.t1 > out.t0;
 }
 
 // The chord's arc starts at the foot, not at the vertex: a foot outside the face would put the arc,
