@@ -295,6 +295,7 @@ private:
     bool chord_inside(const SplitCall& s, const Chord& c) const;
     double path_area(int from, int to, Box2& box) const;
     bool pinched_lobes(int f, int va, int vb, int& ha, int& hb) const;
+    bool once_on_one_loop(int f, int va, int vb, int& ha, int& hb) const;
     void pinch_face(int va, int vb, int ha, int hb);
     void insert_chords(SplitCall& s);
     bool flat_tip(int v, Vec2 curve_end) const;

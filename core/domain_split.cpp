@@ -1004,16 +1004,8 @@ bool DomainMesh::short_chord_inside(int f, const Chord& c, Vec2 mid) const {
 // no pinch (neither half is wider than the resolution); kept whole on the side of its farthest
 // arc, by 3e-4 of 0.43, half of it went to a source up to 0.73 farther in d^2 where d^2 is 1e-7.)
 bool DomainMesh::sides_part_at(const SplitCall& s, int va, int vb) const {
-    int ha = -1, hb = -1, guard = 0;
-    if (faces_[s.f].loops.size() != 1) return false;
-    const int start = faces_[s.f].loops[0];
-    int h = start;
-    do {
-        if (half_[h].origin == va) { if (ha >= 0) return false; ha = h; }
-        if (half_[h].origin == vb) { if (hb >= 0) return false; hb = h; }
-        h = half_[h].next;
-    } while (h != start && ++guard < 1000000);
-    if (ha < 0 || hb < 0) return false;
+    int ha, hb;
+    if (faces_[s.f].loops.size() != 1 || !once_on_one_loop(s.f, va, vb, ha, hb)) return false;
     // An arc's middle lies on the wrong side of the curve by no more than the vertices counted on
     // the curve lie off it (by g; arcs are split where g changes sign, so only an arc ending at
     // such a vertex can cross it), nor than g's rounding (kZero over the gradient's floor, 1e-11):
@@ -1143,6 +1135,17 @@ double DomainMesh::path_area(int from, int to, Box2& box) const {
 // wide, "sliver" 10402, has none) and one of them is wider than kCluster (its area above kCluster
 // times its size).
 bool DomainMesh::pinched_lobes(int f, int va, int vb, int& ha, int& hb) const {
+    if (!once_on_one_loop(f, va, vb, ha, hb)) return false;
+    Box2 box_a, box_b;
+    const double area_a = path_area(ha, vb, box_a), area_b = path_area(hb, va, box_b);
+    if (!(area_a > kCluster * kCluster && area_b > kCluster * kCluster)) return false;
+    auto wide = [](double area, const Box2& b) { return area > kCluster * norm(b.hi - b.lo); };
+    return wide(area_a, box_a) || wide(area_b, box_b);
+}
+
+// Each of va and vb lies once on the loops of face f, both on the same loop: true, with the
+// half-edges of f leaving them (pinched_lobes, sides_part_at).
+bool DomainMesh::once_on_one_loop(int f, int va, int vb, int& ha, int& hb) const {
     ha = hb = -1;
     int loop_a = -1, loop_b = -1;
     for (size_t l = 0; l < faces_[f].loops.size(); ++l) {
@@ -1154,12 +1157,7 @@ bool DomainMesh::pinched_lobes(int f, int va, int vb, int& ha, int& hb) const {
             h = half_[h].next;
         } while (h != start && ++guard < 1000000);
     }
-    if (ha < 0 || hb < 0 || loop_a != loop_b) return false;
-    Box2 box_a, box_b;
-    const double area_a = path_area(ha, vb, box_a), area_b = path_area(hb, va, box_b);
-    if (!(area_a > kCluster * kCluster && area_b > kCluster * kCluster)) return false;
-    auto wide = [](double area, const Box2& b) { return area > kCluster * norm(b.hi - b.lo); };
-    return wide(area_a, box_a) || wide(area_b, box_b);
+    return ha >= 0 && hb >= 0 && loop_a == loop_b;
 }
 
 // Make vb one with va (closer than kTinyChord: pinched_lobes) and split the loop of f through both
@@ -1227,9 +1225,9 @@ bool DomainMesh::flat_tip(int v, Vec2 curve_end) const { return norm(curve_end -
 int DomainMesh::hook_wedge(int hin) {
     const int k = tmp_.hook_count++;
     const std::vector<int>& cands = tmp_.wedge_cands;
-    if (tmp_.recording_hooks) {
-        tmp_.hook_wedges.push_back(hin < 0 ? 0 : (int)cands.size());
-        tmp_.hook_taken.push_back(hin < 0 ? -1 : (int)(std::find(cands.begin(), cands.end(), hin) - cands.begin()));
+    if (tmp_.recording_hooks) {  // (no wedge, hin < 0, only where there are no candidates)
+        tmp_.hook_wedges.push_back((int)cands.size());
+        tmp_.hook_taken.push_back((int)(std::find(cands.begin(), cands.end(), hin) - cands.begin()));
     }
     if (k == tmp_.force_hook && hin >= 0 && tmp_.force_wedge < (int)cands.size()) return cands[tmp_.force_wedge];
     return hin;
