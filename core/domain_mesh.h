@@ -88,7 +88,7 @@ public:
         // a region winning the face keeps it (give_to_region).
         double tie_slack = 0;
     };
-    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0; };
+    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0, line_pairs = 0, hole_chords = 0, crack_claims = 0; };
 
     // Events a caller may watch while a source is inserted (all optional).
     struct Listener {
@@ -233,7 +233,9 @@ private:
         std::vector<int> degree, any_out;
         ConicDecomposition dec;
         std::vector<Vec2> clipped, clip_tmp;
-        std::vector<Chord> chords, cand;
+        std::vector<Chord> chords, cand, hole_cands;
+        std::vector<SplitPiece> line_first, line_second;  // split_by_line_pair
+        std::vector<int> loop_ends;
         std::vector<std::pair<double, int>> pts;
         std::vector<int> verts, es, wedge_cands;
         // insert_chords: each chord's path (flat, with offsets), the face's links before them, and
@@ -269,6 +271,7 @@ private:
     // The clipping primitive (domain_split.cpp): split_face_into runs these steps on one SplitCall.
     struct SplitCall;
     void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out);
+    bool split_by_line_pair(int f, const Quadratic2& g, std::vector<SplitPiece>& out);
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
@@ -292,6 +295,8 @@ private:
     bool foot_in_face(int f, Vec2 q) const;
     bool short_chord_inside(int f, const Chord& c, Vec2 mid) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;
+    int loop_of(int f, int v) const;
+    void close_hole_crossings(SplitCall& s);
     bool chord_inside(const SplitCall& s, const Chord& c) const;
     double path_area(int from, int to, Box2& box) const;
     bool pinched_lobes(int f, int va, int vb, int& ha, int& hb) const;
@@ -346,6 +351,7 @@ private:
     bool loose_tangent(int h) const;
     int past_connector(int h) const;
     bool sides_part_at(const SplitCall& s, int va, int vb) const;
+    double certain_side(const SplitCall& s) const;
     bool straight_chord(int va, int vb, Chord& out) const;
     int hook_wedge(int hin);
     bool mixed_cycle(const SplitCall& s);

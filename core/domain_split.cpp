@@ -36,6 +36,9 @@ constexpr double kTangentTie = 1e-2;
 // An arc whose middle is this far from the curve is certainly on its side (mixed_cycle,
 // sides_part_at): vertices count as on the curve up to kOffCurve.
 constexpr double kMixedSide = 1e-6;
+// A chord whose curve runs outside the face between ends this close may be straight instead
+// (add_chords_of_component): ten times the vertex tolerance.
+constexpr double kNearChord = 1e-6;
 
 // g's tangent line at p: g(p) + grad g(p) . (x - p).
 Quadratic2 tangent_line(const Quadratic2& g, Vec2 p) {
@@ -458,6 +461,7 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         if (r.lo > kZero) { out.push_back({f, 1}); return; }
         if (r.hi < -kZero) { out.push_back({f, -1}); return; }
     }
+    if (!g_in.is_linear() && split_by_line_pair(f, g, out)) return;
     SplitCall s(f, g, g_in.is_linear(), tmp_);
     split_boundary_where_g_changes_sign(s);  // 1.
     classify_by_side(s);                     // 2.
@@ -468,6 +472,44 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
     }
     insert_chords(s);                        // 4.
     rebuild_split_faces(s, out);             // 5.
+}
+
+// g = 0 a line pair crossing on or near the face (within kOffCurve of its box): the face is cut by
+// one line, then each piece by the other, and a piece's sign is the product of its sides of the
+// two lines times g's sign off both (g = k L1 L2, k's sign that of g's quadratic part against
+// L1 L2's). Each cut is a line's, whose crossings are simple; cut at once, the four chords from
+// the centre met at one point, where a cluster of vertices 1e-7 across on the face's boundary left
+// their hooks ambiguous (generate_pairs5.py "pow2_coords" 1147, side A, target 7, the paper's
+// order: two planes' line pair crossing at such a cluster, the face linked into one loop along
+// both lines' sides, and a quadrant where the nearer plane's d^2 is 2.7e-9 kept 7.3e-7).
+bool DomainMesh::split_by_line_pair(int f, const Quadratic2& g, std::vector<SplitPiece>& out) {
+    if (!(g.a * g.c - g.b * g.b < 0)) return false;
+    ConicDecomposition& dec = tmp_.dec;
+    decompose_conic(g, dec);
+    if (dec.type != ConicType::LinePair || dec.components.size() != 2) return false;
+    const CurveComponent l1 = dec.components[0], l2 = dec.components[1];
+    Vec2 m;
+    if (!line_pair_centre(l1, l2, m)) return false;
+    const Box2 b = cached_face_box(f);
+    if (!(m.x >= b.lo.x - kOffCurve && m.x <= b.hi.x + kOffCurve && m.y >= b.lo.y - kOffCurve && m.y <= b.hi.y + kOffCurve)) return false;
+    const Vec2 n1 = perp(l1.u), n2 = perp(l2.u);
+    const double k = g.a * n1.x * n2.x + g.b * (n1.x * n2.y + n1.y * n2.x) + g.c * n1.y * n2.y;
+    if (!(k != 0)) return false;
+    const int sk = k > 0 ? 1 : -1;
+    auto line = [](const CurveComponent& l) {
+        const Vec2 n = perp(l.u);
+        return Quadratic2{0, 0, 0, 0.5 * n.x, 0.5 * n.y, -dot(n, l.c)};
+    };
+    std::vector<SplitPiece>& first = tmp_.line_first;  // (the cuts by a line use neither)
+    std::vector<SplitPiece>& second = tmp_.line_second;
+    split_face_into(f, line(l1), first);
+    out.clear();
+    for (const SplitPiece& p : first) {
+        split_face_into(p.face, line(l2), second);
+        for (const SplitPiece& q : second) out.push_back({q.face, sk * p.sign * q.sign});
+    }
+    ++stats_.line_pairs;
+    return true;
 }
 
 // 1. Split the boundary where g changes sign. Leaves the face's half-edges in tmp_.hes.
@@ -742,7 +784,46 @@ void DomainMesh::find_chords(SplitCall& s) {
     if (dec.type == ConicType::Hyperbola) hyperbola_as_line_pair(s.g, dec);
     if (dec.type == ConicType::LinePair && dec.components.size() == 2) add_line_pair_centre(s);
     s.line_like = dec.type == ConicType::Line || dec.type == ConicType::ParallelLines || dec.type == ConicType::LinePair;
+    tmp_.hole_cands.clear();
     for (const CurveComponent& comp : dec.components) add_chords_of_component(s, comp);
+    close_hole_crossings(s);
+}
+
+// The loop of face f that passes vertex v (its index in the face's loops), or -1.
+int DomainMesh::loop_of(int f, int v) const {
+    const std::vector<int>& loops = faces_[f].loops;
+    for (size_t l = 0; l < loops.size(); ++l) {
+        int h = loops[l], guard = 0;
+        do {
+            if (half_[h].origin == v) return (int)l;
+            h = half_[h].next;
+        } while (h != loops[l] && ++guard < 1000000);
+    }
+    return -1;
+}
+
+// The curve crosses each loop of the face an even number of times: a chord that ends on a hole
+// (an inner loop) leaves it by another. Where the chords found end on two loops an odd number of
+// times each, the exit was dropped as hugging the boundary (a chord between two loops always
+// counts as hugging), and it is put back: alone, the chord into the hole joined the hole to the
+// outer loop and cut nothing. (Generate_pairs5.py "point_like" 1343, side A, target 8 nearest
+// first: a region line through a hole 2e-7 across, 1.4e-7 from the face's outer boundary; the
+// face stayed whole inside the region, and a domain reached 5e-3 beyond its region's line.)
+void DomainMesh::close_hole_crossings(SplitCall& s) {
+    if (tmp_.hole_cands.empty()) return;
+    std::vector<int>& ends = tmp_.loop_ends;
+    ends.assign(faces_[s.f].loops.size(), 0);
+    for (const Chord& c : tmp_.chords)
+        if (c.va >= 0)
+            for (int v : {c.va, c.vb})
+                if (const int l = loop_of(s.f, v); l >= 0) ++ends[l];
+    for (const Chord& c : tmp_.hole_cands) {
+        const int la = loop_of(s.f, c.va), lb = loop_of(s.f, c.vb);
+        if (la < 0 || lb < 0 || la == lb || ends[la] % 2 == 0 || ends[lb] % 2 == 0) continue;
+        tmp_.chords.push_back(c);
+        ++ends[la], ++ends[lb];
+        ++stats_.hole_chords;
+    }
 }
 
 // A chord joining the same two vertices as one already found, through the same middle: the same
@@ -965,13 +1046,24 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             }
             if (flat_boundary_edge(s, c.va, c.vb)) continue;
             const bool near = short_chord || near_boundary(f, mid, tol);
-            if (near && boundary_hugs_chord(f, c, tol)) continue;
+            if (near && boundary_hugs_chord(f, c, tol)) {
+                if (c.va != c.vb && loop_of(f, c.va) != loop_of(f, c.vb) && chord_inside(s, c)) tmp_.hole_cands.push_back(c);
+                continue;
+            }
             if (near && !chord_inside(s, c)) {
                 // The same gap, where the curve passes outside between the ends (generate_pairs4.py
                 // "thin_shell" 16336, the debugger's construction: a spike 1.1e-3 long whose base,
                 // 1.9e-8 across, the conic crossed; the spike, where the old source is nearer,
-                // went with the rest of the face).
+                // went with the rest of the face). A little longer, no pinch (that moves a vertex
+                // by as much), but the straight chord where the sides part there and it runs inside
+                // (generate_pairs4.py "strip_vs_tri" 22018, target 0 of B, the paper's order: a
+                // strip 1.5e-7 wide and 0.09 long, a needle's edge region, which the curve crosses
+                // between two vertices 1.53e-7 apart, its curve 7e-8 off them and outside; half of
+                // the strip kept a source whose d^2 there is up to 0.0084 where the truth is 0).
                 if (short_chord) pinch_or_straight(i, c);
+                else if (norm(vertices_[c.va].p - vertices_[c.vb].p) <= kNearChord &&
+                         point_in_face(f, 0.5 * (vertices_[c.va].p + vertices_[c.vb].p)))
+                    pinch_or_straight(i, c, false);
                 continue;
             }
         }
@@ -1006,17 +1098,7 @@ bool DomainMesh::short_chord_inside(int f, const Chord& c, Vec2 mid) const {
 bool DomainMesh::sides_part_at(const SplitCall& s, int va, int vb) const {
     int ha, hb;
     if (faces_[s.f].loops.size() != 1 || !once_on_one_loop(s.f, va, vb, ha, hb)) return false;
-    // An arc's middle lies on the wrong side of the curve by no more than the vertices counted on
-    // the curve lie off it (by g; arcs are split where g changes sign, so only an arc ending at
-    // such a vertex can cross it), nor than g's rounding (kZero over the gradient's floor, 1e-11):
-    // a needle's tip 2.5e-12 tall has arcs 3e-9 and 1.2e-8 on either side, its vertices on the
-    // curve to 1e-16 (generate_pairs5.py "huge_tiny" 2561).
-    double off = 0;
-    for (int v : tmp_.zero_list) {
-        const Vec2 p = vertices_[v].p;
-        off = std::max(off, std::fabs(s.g(p)) / std::max(norm(s.g.gradient(p)), 1e-3));
-    }
-    const double certain = std::min(kMixedSide, std::max(4 * off, 1e-10));
+    const double certain = certain_side(s);
     auto side = [&](int from, int to) {  // the side of the arcs from `from` to vertex `to`, else 0
         double hi = 0, lo = 0, v;
         for (int k = from; half_[k].origin != to; k = half_[k].next)
@@ -1025,6 +1107,21 @@ bool DomainMesh::sides_part_at(const SplitCall& s, int va, int vb) const {
     };
     const int a = side(ha, vb), b = side(hb, va);
     return a != 0 && b == -a;
+}
+
+// How far an arc's middle must lie from the curve to be certainly on its side (sides_part_at,
+// mixed_cycle). It lies on the wrong side by no more than the vertices counted on the curve lie off
+// it (by g; arcs are split where g changes sign, so only an arc ending at such a vertex can cross
+// it), nor than g's rounding (kZero over the gradient's floor, 1e-11): a needle's tip 2.5e-12 tall
+// has arcs 3e-9 and 1.2e-8 on either side, its vertices on the curve to 1e-16 (generate_pairs5.py
+// "huge_tiny" 2561). Never more than kMixedSide, the farthest a vertex is counted on the curve.
+double DomainMesh::certain_side(const SplitCall& s) const {
+    double off = 0;
+    for (int v : tmp_.zero_list) {
+        const Vec2 p = vertices_[v].p;
+        off = std::max(off, std::fabs(s.g(p)) / std::max(norm(s.g.gradient(p)), 1e-3));
+    }
+    return std::min(kMixedSide, std::max(4 * off, 1e-10));
 }
 
 // The straight chord from va to vb (sides_part_at): a segment as short as 1e-13, on the curve as
@@ -1233,11 +1330,15 @@ int DomainMesh::hook_wedge(int hin) {
     return hin;
 }
 
-// A loop of the face's half-edges, as the chords left them, with an arc well inside each side of
-// the curve: the loop cannot be one piece (the arcs' sides are those at their middles, kMixedSide
-// from the curve where vertices are on it to kOffCurve).
+// A loop of the face's half-edges, as the chords left them, with an arc certainly on each side of
+// the curve (certain_side): the loop cannot be one piece. (Generate_pairs5.py "huge_tiny" 3914,
+// side B, target 0, nearest first: in a cluster of domains 7e-6 across, a curve through three
+// vertices, touching the face's boundary at one, was linked into one loop with arcs 1e-8 on
+// either side; with kMixedSide alone (1e-6) it stayed, and a lobe where the huge source's plane
+// was nearer kept the tiny source's edge, d^2 1.6 times too high.)
 bool DomainMesh::mixed_cycle(const SplitCall& s) {
     const std::vector<int>& hes = tmp_.hes;
+    const double certain = certain_side(s);
     const uint64_t stamp = tmp_.next_stamp(tmp_.cycle_mark, half_.size());
     for (int h0 : hes) {
         if (tmp_.cycle_mark[h0] == stamp) continue;
@@ -1249,7 +1350,7 @@ bool DomainMesh::mixed_cycle(const SplitCall& s) {
             if (s.side_of(h, v)) hi = std::max(hi, v), lo = std::min(lo, v);
             h = half_[h].next;
         } while (h >= 0 && h != h0 && ++guard <= hes.size());
-        if (hi > kMixedSide && lo < -kMixedSide) return true;
+        if (hi > certain && lo < -certain) return true;
     }
     return false;
 }

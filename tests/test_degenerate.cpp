@@ -2142,3 +2142,154 @@ TEST(Degenerate, NeedleTipCutWhereItsSidesPartByLessThanTheVertexTolerance) {
                                      {{0, 1, 2}, {3, 4, 5}});
     expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
 }
+
+// Generate_pairs5.py "huge_tiny" 3914 (target 0 of B against three of A's triangles, nearest
+// first): a huge triangle and a tiny one 1e-5 across share a corner near T'. Where the huge
+// one's plane comes in, the curve crosses a cluster of domains 7e-6 across through three
+// vertices, touching the face's boundary at one; the chords were linked into one loop whose arcs
+// lay 1e-8 on either side of the curve, and a lobe where the plane is nearer kept the tiny
+// triangle's edge (d^2 1.6 times the truth). Sides that far apart are certain there (the split's
+// vertices lie on the curve to 2e-11), though below kMixedSide: the loop is now re-hooked
+// (DomainMesh::mixed_cycle with certain_side). The oracle: validate() after every insertion
+// (d^2 continuous across every edge, polynomials against brute-force d^2 at interior points),
+// and d^2 by brute force over the sources on a grid at the end.
+TEST(Degenerate, CurveThroughAClusterTouchingTheBoundaryIsLinkedOnItsSides) {
+    const TriangleMesh T = make_mesh({{0.34606595797674278, 0.74463307375979726, -0.71467326115329},
+                                      {-1.7209880376990101, -0.015987304409845179, -0.020962143630618251},
+                                      {1.3749215220536679, -0.72862028266853573, 0.73566168985266056}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0, 0, 0},
+                                      {-6.8901782022771343, -2.5354827616953415, 2.3122863375349865},
+                                      {3.4295186225097063, -4.9108479759026302, 4.8344462739979139},
+                                      {-9.5948978400253695e-06, -1.056100233577943e-05, 1.0036653554743437e-05},
+                                      {3.6600778245255754e-06, -6.6863916750827522e-06, 2.0492143501506054e-05},
+                                      {-3.460659579767428, -7.4463307375979717, 7.1467326115329008},
+                                      {-1.7303238068929048, -3.7231739360533269, 3.5733747397336653}},
+                                     {{0, 1, 2}, {0, 3, 4}, {0, 5, 6}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
+
+// Generate_pairs5.py "pow2_coords" 1147 (target 7 of A against three of B's triangles, the
+// paper's order): coordinates are powers of two from 2^13 to 2^53; two sources' planes give a
+// line pair whose lines cross at a cluster of vertices 1e-7 across on a face's boundary. Cut at
+// once, the four chords from the crossing were hooked so that one loop ran along both lines'
+// sides, and a quadrant where the nearer plane's d^2 is 2.7e-9 kept 7.3e-7. The face is now cut
+// by one line, then each piece by the other (DomainMesh::split_by_line_pair). The oracle:
+// validate() after every insertion, and d^2 by brute force over the sources on a grid at the end.
+TEST(Degenerate, LinePairCrossingAtAClusterIsCutOneLineAtATime) {
+    const TriangleMesh T = make_mesh({{-262144, 9007199254740992, -33554432},
+                                      {-4398046511104, -137438953472, 17179869184},
+                                      {4503599627370496, -562949953421312, 0}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0, 0, 137438953472},
+                                      {35184372088832, -274877906944, -67108864},
+                                      {0, 8388608, 0},
+                                      {4503599627370496, 68719476736, 4294967296},
+                                      {-140737488355328, 67108864, -2251799813685248},
+                                      {-4194304, 0, 8796093022208},
+                                      {-67108864, 17592186044416, 1073741824},
+                                      {0, -281474976710656, 281474976710656},
+                                      {-536870912, 0, -549755813888}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
+
+// Generate_pairs5.py "point_like" 1343 (target 8 of A, a triangle 3e-17 across at the origin,
+// against three of B's triangles 1e-6 across that share the origin): a region line passes
+// through a hole of a face (a domain 2e-7 across inside it) 1.4e-7 from the face's outer
+// boundary. The chord from the hole to the outer boundary counted as hugging the boundary and
+// was dropped, so the chord into the hole joined it to the outer loop and cut nothing: the face
+// stayed whole inside the region, and its domain reached 5e-3 (of T') beyond the region's line.
+// A loop that the chords end on an odd number of times lost one: it is put back
+// (DomainMesh::close_hole_crossings). The oracle: validate() after every insertion, which
+// checks that each domain's interior points lie in its feature's region (the region's lines
+// computed from the source alone), and d^2 by brute force at interior points. No grid check at
+// 1e-9: brute-force d^2 here takes differences of corners 1e-6 from a target 3e-17 across and
+// is itself only good to about 1e-4 relative (validate() allows for that rounding).
+TEST(Degenerate, RegionLineThroughAHoleNearTheBoundaryCutsTheFace) {
+    const TriangleMesh T = make_mesh({{0, 0, 0},
+                                      {-1.4376607216979174e-17, 5.7031757523314388e-18, 2.5806255998849829e-17},
+                                      {1.7434245932259758e-18, -9.7017356827570602e-20, -8.8533878919534599e-19}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0, 0, 0},
+                                      {-7.4720501193384015e-07, -5.475918676572421e-08, -1.0981954506385953e-07},
+                                      {-6.9244582516811596e-07, -8.0196419869956446e-07, -2.2468870841833642e-07},
+                                      {5.475918676572421e-08, -7.4720501193384015e-07, -1.0981954506385953e-07},
+                                      {8.0196419869956446e-07, -6.9244582516811596e-07, -2.2468870841833642e-07}},
+                                     {{1, 2, 0}, {2, 3, 0}, {0, 3, 4}});
+    expect_constructions_hold(T, B, [](const TargetSolver&) {});
+}
+
+// Generate_pairs6.py "stacked_layers_far" 609 (target 5 of A against four of B's triangles, 1e7
+// from the origin, nearest first): layers of grids 6e-5 of their size apart, one coplanar with T'.
+// A chord's end stood 1.6e-7 beyond T''s corner (within the resolution), and the coplanar source
+// whose edge runs along T''s edge there has an edge region that meets T' along that edge alone:
+// clipped to T', its box was one corner of T' by rounding, the face poking out missed it, and
+// kept a layer 6e-5 away (d^2 3.3e-9 beside 1e-19 across an edge). T' is now moved out by
+// kCluster before the regions are clipped (DomainMesh::clip_regions_to_target). The oracle:
+// validate() after every insertion (d^2 continuous across every edge, polynomials against
+// brute-force d^2 at interior points), and d^2 by brute force on a grid at the end.
+TEST(Degenerate, EdgeRegionMeetingTheTargetAlongAnEdgeReachesFacesBeyondIt) {
+    const TriangleMesh T = make_mesh({{-84581.41527995748, -10788344.297844533, 4446222.1316264784},
+                                      {-84581.935680656956, -10788344.315257559, 4446222.1021010745},
+                                      {-84581.893551791189, -10788344.273003066, 4446222.2558505516}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-84581.654415352721, -10788344.285452537, 4446222.1937462697},
+                                      {-84581.956744568219, -10788344.336413544, 4446222.025234092},
+                                      {-84581.893551269575, -10788344.273031805, 4446222.2558583068},
+                                      {-84581.734127846619, -10788344.281283556, 4446222.2144425269},
+                                      {-84581.776256712386, -10788344.323538048, 4446222.0606930507},
+                                      {-84581.935680656956, -10788344.315257559, 4446222.1021010745},
+                                      {-84581.893551791189, -10788344.273003066, 4446222.2558505516},
+                                      {-84581.654416395948, -10788344.285395062, 4446222.1937307594},
+                                      {-84581.717609694591, -10788344.348776801, 4446221.9631065447},
+                                      {-84581.893552312802, -10788344.272974327, 4446222.2558427965}},
+                                     {{0, 1, 2}, {3, 4, 5}, {3, 5, 6}, {7, 8, 9}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
+
+// Generate_pairs4.py "f32_export" 21117 (target 7 of B against two of A's triangles, the paper's
+// order): the second source is a float32 copy of T' whose edge lies 1.1e-7 inside T''s. The
+// first source's domain kept a sliver 1.2e-7 wide between the two edges (d^2 0.2 where the copy
+// gives 1e-15): no cut could take it (narrower than a chord), and the crack rule wanted the
+// region deepest at its middle, the copy's face region, to hold every corner of it; that region
+// missed the far corner by 1.03e-7, while the copy's edge region held them all. The crack now
+// goes to the deepest of the regions that hold every corner (DomainMesh::claim_cracks). The
+// oracle: validate() after every insertion (d^2 continuous across every edge, polynomials
+// against brute-force d^2), and d^2 by brute force on a grid at the end.
+TEST(Degenerate, SliverBetweenATargetsEdgeAndItsCopysGoesToTheCopy) {
+    const TriangleMesh T = make_mesh({{0.0026704581309744311, 0.016046821077494718, -0.015214456453168218},
+                                      {0.0035096783411027207, 0.0087074870327704702, -0.014843162899425331},
+                                      {0.00066737439496231902, 0.014230569226921119, -0.017119838173099658}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0.0046735419891774654, 0.017863072454929352, -0.013309074565768242},
+                                      {0.005512761417776346, 0.010523739270865917, -0.01293778046965599},
+                                      {0.0026704580523073673, 0.01604682020843029, -0.015214456245303154},
+                                      {0.0006673744064755738, 0.014230568893253803, -0.017119837924838066}},
+                                     {{0, 1, 2}, {2, 1, 3}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
+
+// Generate_pairs4.py "strip_vs_tri" 22018 (target 0 of B against two of A's triangles, in every
+// order): two needle triangles of one strip, each edge 1.5e-7 long at one end. The second
+// needle's curve crosses the first's edge region, a strip 1.5e-7 wide, between two vertices
+// 1.53e-7 apart, its curve 7e-8 off them and running outside the strip between them: a chord
+// that long was dropped (only one shorter than 1e-7 could be straight or pinched), and the strip
+// kept the first needle's d^2 where the second's is up to 0.0019 lower. The straight chord is now
+// tried up to 1e-6 where the face's sides part there (kNearChord). The oracle: validate() after
+// every insertion (d^2 continuous across every edge, polynomials against brute-force d^2), and
+// d^2 by brute force on a grid at the end.
+TEST(Degenerate, StripCrossedWhereTheCurveRunsOutsideBetweenVerticesPastTheToleranceIsCut) {
+    const TriangleMesh T = make_mesh({{-1077247.5992004815, -2857479.651923954, -1454899.2624891079},
+                                      {-1429350.1307138004, -3728517.6413343637, -1541732.7193404362},
+                                      {-1324873.6041197807, -2668594.1127637611, -2345532.2035522815}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-1272298.7874507541, -3019716.3873905833, -1834514.6219326339},
+                                      {-1268422.8836888396, -3041999.8017069744, -1800569.7307271599},
+                                      {-1268422.9750977049, -3041999.9595751185, -1800569.8239237848},
+                                      {-1260671.0761650105, -3086566.6303397566, -1732679.9483162118},
+                                      {-1256795.263811961, -3108850.2025242914, -1698735.1503073624},
+                                      {-1260671.1675738757, -3086566.7882079002, -1732680.0415128367}},
+                                     {{0, 1, 2}, {3, 4, 5}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
+}
