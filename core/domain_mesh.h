@@ -88,7 +88,7 @@ public:
         // a region winning the face keeps it (give_to_region).
         double tie_slack = 0;
     };
-    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0, line_pairs = 0, hole_chords = 0, crack_claims = 0; };
+    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0, line_pairs = 0, hole_chords = 0; };
 
     // Events a caller may watch while a source is inserted (all optional).
     struct Listener {

@@ -162,13 +162,9 @@ size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned 
 // the source gives 3e-15). The same holds for a sliver along one region line, as long as it likes
 // but no wider than kCluster ("sliver" 11746: 6.6e-6 by 1e-8 at a needle source's corner, left
 // with a domain 0.05 away, d^2 0.0026 beside 2e-11). The paper's insertion gives what is left to
-// the last region; here a piece goes to a region that may be nearer on F and holds every corner
-// of the piece, up to kCluster: such a piece is no region's part of any face but by rounding. Of
-// those regions, the one its interior point lies deepest in: the deepest of all may hold no corner
-// (generate_pairs4.py "f32_export" 21117, target 7 of B, the paper's order: a sliver 1.2e-7 wide
-// along T''s edge, between it and a float32 copy's edge 1.1e-7 inside, kept a source 0.2 away in
-// d^2 where the copy's face region, deepest at its middle, missed its far corner by 1.03e-7 and
-// the copy's edge region held every corner).
+// the last region; here a piece goes to the region that holds its interior point if that region
+// may be nearer on F and holds every corner of the piece, up to kCluster: such a piece is no
+// region's part of any face but by rounding.
 void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
     std::vector<int>& cracks = tmp_.inside;  // free again: the region loop is done with it
     cracks.clear();
@@ -177,13 +173,8 @@ void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
     for (int P : cracks) {
         Vec2 x;
         if (!interior_point(P, x)) continue;
-        const unsigned holding = regions_holding_corners(P, src, may_win);
-        size_t best = 0;
-        double deepest = -HUGE_VAL;
-        for (size_t k = 0; k < src.regions.size(); ++k)
-            if (const double m = region_margin(src.regions[k], x); (holding >> k & 1u) && m > deepest) deepest = m, best = k;
-        if (best != deepest_region(src, x)) ++stats_.crack_claims;
-        apply_region(P, src, src.regions[best], nullptr);
+        const size_t best = deepest_region(src, x);
+        if (regions_holding_corners(P, src, may_win & (1u << best))) apply_region(P, src, src.regions[best], nullptr);
     }
 }
 
