@@ -139,6 +139,7 @@ public:
 
     // The exact squared distance from a point of T' (frame coordinates) to the inserted sources.
     double direct_d2(Vec2 p) const;
+    Vec2 onto_target(Vec2 p) const;  // the point of T' nearest p
     uint32_t target() const { return target_; }
     std::array<Vec3, 3> source_corners(uint32_t s) const;
 

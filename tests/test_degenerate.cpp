@@ -2295,3 +2295,35 @@ TEST(Degenerate, CrackGoesOnlyToARegionHoldingItsMiddle) {
                                      {{1, 0, 2}, {2, 0, 3}, {0, 4, 5}});
     expect_constructions_hold(T, B, [](const TargetSolver&) {});
 }
+
+// Generate_pairs.py "perp" 65235 (A to B): the maximum over A was taken at a domain mesh vertex
+// 1.4e-10 outside the middle of a target's edge (a chord's end may stand up to the resolution
+// beyond T'), where the distance is 1.2e-10 above the truth, and the certified interval missed
+// the truth (the checker's Lipschitz bound, 4 - 3e-14). Candidates are now evaluated at the point
+// of T' nearest them (TargetSolver::onto_target). The oracle: the witness point lies on A (brute
+// force over A's triangles), and the result is its distance to B by brute force.
+TEST(Degenerate, MaximumIsTakenOnTheTargetNotBeyondItsEdge) {
+    const TriangleMesh A = make_mesh({{0, 0, 0},
+                                      {7.68144509689981, 1.5503686744502163, 1.6098938463753878},
+                                      {0.89098596526418361, -0.38503573738371488, -3.8804499082760531},
+                                      {8.572431062163993, 1.1653329370665015, -2.2705560619006651},
+                                      {1.7819719305283672, -0.77007147476742976, -7.7608998165521061},
+                                      {9.4634170274281768, 0.78029719968278655, -6.1510059701767181}},
+                                     {{0, 2, 1}, {2, 3, 1}, {2, 4, 3}, {4, 5, 3}});
+    const TriangleMesh B = make_mesh({{0.91813419730454915, -0.54221082955664923, -3.8586213352357257},
+                                      {6.806087497747825, 0.374639885393109, -5.767009194443073},
+                                      {8.599579294204359, 1.0081578448935671, -2.2487274888603381},
+                                      {0.86383773322381807, -0.22786064521078056, -3.9022784813163804},
+                                      {4.2078565935075964, -0.18955174818054887, -6.5980004383653057},
+                                      {4.0240679332732174, -0.013182338814178851, -6.6742172826738448},
+                                      {8.5452828301236288, 1.3225080292394358, -2.2923846349409924}},
+                                     {{2, 0, 3}, {2, 3, 6}, {4, 1, 5}});
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        HausdorffOptions opt;
+        opt.mode = mode;
+        const OneSidedResult r = hausdorff(A, B, opt).a_to_b;
+        EXPECT_LE(brute_distance(r.from_point, A), 1e-13) << "the witness is not on A";
+        const double d = brute_distance(r.from_point, B);
+        EXPECT_NEAR(r.distance, d, 1e-13);
+    }
+}
