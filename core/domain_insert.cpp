@@ -74,17 +74,17 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
 // Each region clipped to T': a face whose box misses it needs no cut for it, and a face whose box
 // lies inside it (the region is convex) needs none either. The clipped regions' boxes are the same
 // for every face, so they are taken once.
-void DomainMesh::clip_regions_to_target(const SourceProjection& src, RegionBoxes& out) {
-    // T' is its three corners (vertices 0-2, counter-clockwise): the points its boundary gained
-    // since lie between them. Its edges are moved out by kCluster: a chord's end may stand that
-    // far beyond them (the domain mesh's resolution), and a region that meets T' along an edge
-    // alone (a coplanar source's edge region on T''s edge: its box one corner of T', by rounding)
-    // must still reach the faces that poke out there. (Generate_pairs6.py "stacked_layers_far"
-    // 609, side A, target 5, nearest first: a corner of a face 1.6e-7 beyond T''s corner, where a
-    // coplanar source's edge is 2e-7 off, kept a layer 6e-5 away, d^2 3.3e-9 beside 1e-19.)
-    Vec2 corner[3];
+// T' (its corners P, counter-clockwise) with its edges moved out by kCluster: a chord's end may
+// stand that far beyond them (the domain mesh's resolution), and a region that meets T' along an
+// edge alone (a coplanar source's edge region on T''s edge: clipped to T', its box one corner of
+// T', by rounding) must still reach the faces that poke out there. (Generate_pairs6.py
+// "stacked_layers_far" 609, side A, target 5, nearest first: a corner of a face 1.6e-7 beyond
+// T''s corner, where a coplanar source's edge is 2e-7 off, kept a layer 6e-5 away, d^2 3.3e-9
+// beside 1e-19.) Taken once, by the constructor.
+std::array<Vec2, 3> DomainMesh::grown_target(const std::array<Vec2, 3>& P) {
+    std::array<Vec2, 3> corner;
     for (int i = 0; i < 3; ++i) {
-        const Vec2 a = vertices_[(i + 2) % 3].p, b = vertices_[i].p, c = vertices_[(i + 1) % 3].p;
+        const Vec2 a = P[(i + 2) % 3], b = P[i], c = P[(i + 1) % 3];
         const Vec2 u = (b - a) / norm(b - a), v = (c - b) / norm(c - b);  // edges into and out of b
         const double sine = cross(u, v);  // > 0: T' is counter-clockwise
         // b moved out by kCluster from both edges: b + kCluster (n_u + n_v) / (1 + n_u . n_v),
@@ -93,9 +93,15 @@ void DomainMesh::clip_regions_to_target(const SourceProjection& src, RegionBoxes
         const Vec2 shift = (kCluster / std::max(1 + dot(nu, nv), 1e-6)) * (nu + nv);
         corner[i] = sine > 0 ? b + std::min(1.0, 1e3 * kCluster / norm(shift)) * shift : b;
     }
+    return corner;
+}
+
+void DomainMesh::clip_regions_to_target(const SourceProjection& src, RegionBoxes& out) {
+    // T' grown by kCluster (grown_target): the points its boundary gained since lie between its
+    // corners.
     for (size_t k = 0; k < src.regions.size(); ++k) {
         std::vector<Vec2>& P = tmp_.clipped;
-        P.assign({corner[0], corner[1], corner[2]});
+        P.assign(grown_.begin(), grown_.end());
         clip_convex_in_place(P, src.regions[k].planes, tmp_.clip_tmp);
         out.empty[k] = P.empty();
         for (Vec2 p : P) out.box[k].add(p);

@@ -51,7 +51,7 @@ double arc_interior_max(const RationalCurve& c, double z0, double z1, const Quad
 
 // ---------------------------------------------------------------- construction
 
-DomainMesh::DomainMesh(const std::array<Vec2, 3>& P) {
+DomainMesh::DomainMesh(const std::array<Vec2, 3>& P) : grown_(grown_target(P)) {
     faces_.resize(2);
     faces_[0].infinite = true;  // outside T': never a domain
     for (int i = 0; i < 3; ++i) add_vertex(P[i]);

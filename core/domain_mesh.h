@@ -310,6 +310,8 @@ private:
     // The insertion of a source (domain_insert.cpp): its regions clipped to T' once, then each face.
     struct RegionBoxes { Box2 box[7]; bool empty[7]; };
     long relabels_ = 0;  // pieces given to a source, ever (insert: did anything change?)
+    std::array<Vec2, 3> grown_;  // T' grown by kCluster, for the regions' boxes (grown_target)
+    static std::array<Vec2, 3> grown_target(const std::array<Vec2, 3>& P);
     void clip_regions_to_target(const SourceProjection& src, RegionBoxes& out);
     static bool region_box_misses(const Box2& b, const RegionBoxes& boxes, size_t k);
     static bool region_box_inside(const Box2& b, const SourceRegion& reg);

@@ -496,10 +496,7 @@ bool DomainMesh::split_by_line_pair(int f, const Quadratic2& g, std::vector<Spli
     const double k = g.a * n1.x * n2.x + g.b * (n1.x * n2.y + n1.y * n2.x) + g.c * n1.y * n2.y;
     if (!(k != 0)) return false;
     const int sk = k > 0 ? 1 : -1;
-    auto line = [](const CurveComponent& l) {
-        const Vec2 n = perp(l.u);
-        return Quadratic2{0, 0, 0, 0.5 * n.x, 0.5 * n.y, -dot(n, l.c)};
-    };
+    auto line = [](const CurveComponent& l) { return half_plane(perp(l.u), dot(perp(l.u), l.c)); };
     std::vector<SplitPiece>& first = tmp_.line_first;  // (the cuts by a line use neither)
     std::vector<SplitPiece>& second = tmp_.line_second;
     split_face_into(f, line(l1), first);

@@ -496,9 +496,7 @@ Vec2 TargetSolver::onto_target(Vec2 p) const {
     Vec2 best = c[0];
     double best_d = HUGE_VAL;
     for (int k = 0; k < 3; ++k) {
-        const Vec2 a = c[k], d = c[(k + 1) % 3] - a;
-        const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
-        const Vec2 q = a + t * d;
+        const Vec2 q = segment_closest(p, c[k], c[(k + 1) % 3]);
         if (norm(p - q) < best_d) best_d = norm(p - q), best = q;
     }
     return best;

@@ -24,12 +24,14 @@ inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 inline double norm2(Vec2 a) { return dot(a, a); }
 inline double norm(Vec2 a) { return std::sqrt(dot(a, a)); }
 inline Vec2 perp(Vec2 a) { return {-a.y, a.x}; }  // rotate +90 degrees
-// Distance from p to the segment a-b (the clamped projection; a point segment is its end).
-inline double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+// The point of the segment a-b nearest p (the clamped projection; a point segment is its end).
+inline Vec2 segment_closest(Vec2 p, Vec2 a, Vec2 b) {
     const Vec2 d = b - a;
     const double t = norm2(d) > 0 ? std::clamp(dot(p - a, d) / norm2(d), 0.0, 1.0) : 0.0;
-    return norm(a + t * d - p);
+    return a + t * d;
 }
+// Distance from p to the segment a-b.
+inline double segment_distance(Vec2 p, Vec2 a, Vec2 b) { return norm(segment_closest(p, a, b) - p); }
 
 struct Vec3 {
     double x = 0, y = 0, z = 0;

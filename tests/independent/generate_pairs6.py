@@ -225,6 +225,15 @@ def param_grid(nu, nv, surf, rng, pattern="rand", jitter=0.0, u_range=(0.0, 1.0)
     return M
 
 
+def sphere_patch(t0, dt, p0, dp):
+    """The unit sphere over polar angle t0 + dt u and azimuth p0 + dp v, (u, v) in [0,1]^2."""
+    def sph(u, v):
+        t = t0 + dt * u
+        p = p0 + dp * v
+        return (math.sin(t) * math.cos(p), math.sin(t) * math.sin(p), math.cos(t))
+    return sph
+
+
 def random_surface(rng, curved=None):
     """A surface patch over [0,1]^2 in parameter space, about unit size."""
     kinds = ["plane", "saddle", "bump", "sphere", "cylinder", "terrain"]
@@ -246,12 +255,7 @@ def random_surface(rng, curved=None):
         dt = rng.uniform(0.2, 1.2)
         p0 = rng.uniform(0, 6)
         dp = rng.uniform(0.2, 1.5)
-
-        def sph(u, v):
-            t = t0 + dt * u
-            p = p0 + dp * v
-            return (math.sin(t) * math.cos(p), math.sin(t) * math.sin(p), math.cos(t))
-        return k, sph
+        return k, sphere_patch(t0, dt, p0, dp)
     if k == "cylinder":
         a = rng.uniform(0.3, 3.0)
         L = rng.uniform(0.3, 2.0)
@@ -316,11 +320,7 @@ def k_collapse_sphere(rng):
         t0 = rng.uniform(0.1, 1.0)
         p0 = rng.uniform(0, 6)
         span = rng.uniform(0.3, 1.5)
-
-        def sph(u, v):
-            t = t0 + span * u
-            p = p0 + span * v
-            return (math.sin(t) * math.cos(p), math.sin(t) * math.sin(p), math.cos(t))
+        sph = sphere_patch(t0, span, p0, span)
         A = param_grid(rng.randint(3, 6), rng.randint(3, 6), sph, rng, rng.choice(PATTERNS))
     else:
         n = rng.randint(2, 5)  # octant of an octahedron, subdivided n times per edge, projected
