@@ -341,6 +341,8 @@ private:
             return;
         }
         atomic_max(L_, ts.max_sq());
+        // Its domain mesh's own maximum bounds the piece where its candidates may fall short (slack()).
+        atomic_max(bound_sq_[p.target], ts.claimed_sq());
         // With its rounding: the same maximum computed over the whole target may come out higher.
         atomic_max(best_sq_[p.target], ts.max_sq() + ts.rounding_sq());
         if (ts.slack() > 0) {

@@ -101,6 +101,12 @@ public:
     const TargetFrame& frame() const { return frame_; }
     const DomainMesh* domain_mesh() const { return mesh_.get(); }   // null for a degenerate target
     double max_sq() const { return max_sq_; }         // current max of d^2 over T' (world units)
+    // Once finished: the domain mesh's own maximum, by its domains' polynomials (world units).
+    // max_sq() is d^2 evaluated directly at the best candidates, so where a domain too thin to cut
+    // stayed with a neighbour whose polynomial lies above d^2 there, the neighbour's candidates
+    // come out lower than their polynomial says, and the thin domain's own maximum is nobody's
+    // candidate: then this, not max_sq(), bounds d^2 over T' (see kResolution).
+    double claimed_sq() const { return claimed_sq_; }
     Vec3 max_point() const { return max_world_; }
     Vec2 max_point_2d() const { return max_2d_; }
     double search_radius() const;                     // sqrt(max_sq), +inf before the first source
@@ -109,8 +115,9 @@ public:
     const std::vector<Event>& events() const { return log_; }
     const std::vector<Candidate>& candidates() const { return candidates_; }
     bool stopped_early() const { return stopped_early_; }
-    // For a sliver target (handled as its three edges): how far the true maximum distance may lie
-    // above max_sq()'s root. Zero for every other target.
+    // How far the true maximum distance may lie above max_sq()'s root: for a sliver target
+    // (handled as its three edges) its height; once finished, at least claimed_sq()'s root less
+    // max_sq()'s. Zero for every other target.
     double slack() const;
     // The same for a target with frame `frame`, without solving it.
     static double sliver_slack(const TargetFrame& frame);
@@ -122,7 +129,9 @@ public:
     // narrower than kVertexTolerance along a boundary stays with its neighbour, and a vertex may
     // sit up to 1e-6 off its curves (DomainMesh::kOffCurve). As d is 1-Lipschitz, d over T' is at
     // most sqrt(max_sq()) + kResolution * scale: the search radius culls with that, and
-    // upper_sq() bounds the true maximum by it (rounding included).
+    // upper_sq() bounds the true maximum by it (rounding included). Once finished, the bound is
+    // taken from the larger of max_sq() and claimed_sq(): the Lipschitz step starts from the
+    // domains' polynomials, which the directly evaluated candidates may undercut.
     static constexpr double kResolution = 1e-6;
     double upper_sq() const;
     // Voxel states for display: 0 unseen, 1 pending, 2 visited, 3 culled.
@@ -155,7 +164,7 @@ private:
     void queue_neighbours(size_t voxel);
     bool beyond(double d2) const;                          // farther than the search radius
     // sqrt(max_sq_) widened by the domain mesh's resolution (kResolution): beyond(), upper_sq().
-    double resolved_radius() const { return std::sqrt(max_sq_) + kResolution * frame_.scale; }
+    double resolved_radius() const { return std::sqrt(std::max(max_sq_, claimed_sq_)) + kResolution * frame_.scale; }
     double centroid_bound2(uint32_t s, double* dc = nullptr) const;
     void insert(uint32_t s, double dist, size_t voxel);
     void update_maximum();
@@ -195,6 +204,7 @@ private:
     std::unique_ptr<Seen> seen_;
 
     double max_sq_ = HUGE_VAL;        // world units
+    double claimed_sq_ = 0;           // world units; set by finish() (claimed_sq())
     // d^2 at T''s corners (the domain mesh's vertices 0-2), exact over the inserted sources (frame
     // units): update_maximum holds a corner's candidate to it (see there).
     double corner_d2_[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
