@@ -88,7 +88,8 @@ public:
         // a region winning the face keeps it (give_to_region).
         double tie_slack = 0;
     };
-    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0, line_pairs = 0, hole_chords = 0; };
+    struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0, line_pairs = 0, hole_chords = 0,
+                   departures = 0; };
 
     // Events a caller may watch while a source is inserted (all optional).
     struct Listener {
@@ -295,6 +296,7 @@ private:
     bool foot_in_face(int f, Vec2 q) const;
     bool short_chord_inside(int f, const Chord& c, Vec2 mid) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;
+    bool chord_past_departure(const SplitCall& s, const Chord& c, double tol, Chord& out) const;
     int loop_of(int f, int v) const;
     void close_hole_crossings(SplitCall& s);
     bool chord_inside(const SplitCall& s, const Chord& c) const;

@@ -986,6 +986,14 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             pinch_at(i, c);
         }
     };
+    // A chord along the boundary and then inside (chord_past_departure): the part inside.
+    auto departure = [&](const Chord& c, double tol) {
+        Chord rest;
+        if (chord_past_departure(s, c, tol, rest) && !duplicate_chord(rest)) {
+            tmp_.chords.push_back(rest);
+            ++stats_.departures;
+        }
+    };
     for (size_t i = 0; i < cand.size(); ++i) {
         const Chord c = cand[i];
         // From a vertex back to itself: a loop no wider than the 1e-7 within which the curve
@@ -1039,6 +1047,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
                 // from the other were left in different loops, bridged them, and the face stayed
                 // whole across the line: d^2 4.3 times the truth over 0.0037 of T'.)
                 if (short_chord) pinch_or_straight(i, c);
+                else departure(c, tol);
                 continue;
             }
             if (flat_boundary_edge(s, c.va, c.vb)) continue;
@@ -1061,6 +1070,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
                 else if (norm(vertices_[c.va].p - vertices_[c.vb].p) <= kNearChord &&
                          point_in_face(f, 0.5 * (vertices_[c.va].p + vertices_[c.vb].p)))
                     pinch_or_straight(i, c, false);
+                else departure(c, tol);
                 continue;
             }
         }
@@ -1302,6 +1312,45 @@ bool DomainMesh::boundary_hugs_chord(int f, const Chord& c, double tol) const {
         return false;
     }
     return true;
+}
+
+// A chord that runs along the face's boundary from one end (hugging it) and then leaves it for
+// the face's inside at a vertex w of the boundary within kCluster of the curve, but not counted on
+// it (off by more than kOnCurve): the part past w, from w, is the chord (`out`), the part before
+// it is already there. (Generate_pairs5.py "sliver_strip" 893, target 7 of B: a line 2.3e-8 from
+// such a vertex, its chord's first half along an arc that lies within 5e-8 of it, was dropped as
+// outside the face, and a triangle of 4.4e-3 of T' kept a source up to 5.4e-3 farther in d^2.)
+bool DomainMesh::chord_past_departure(const SplitCall& s, const Chord& c, double tol, Chord& out) const {
+    if (c.va < 0 || c.va == c.vb || c.comp.closed()) return false;
+    // Inside by more than the resolution: in a face thinner than that, every vertex is within
+    // kCluster of a curve along it, and the part "inside" is no departure (generate_pairs5.py
+    // "seam_strip" 11761: a region line along a strip 1e-7 high, cut diagonally across it).
+    auto deep_inside = [&](Vec2 p) { return point_in_face(s.f, p) && !near_boundary(s.f, p, kCluster); };
+    for (int start : faces_[s.f].loops) {
+        int h = start, guard = 0;
+        do {
+            const int w = half_[h].origin;
+            h = half_[h].next;
+            if (w == c.va || w == c.vb) continue;
+            const Vec2 p = vertices_[w].p;
+            double feet[3];
+            const int n = c.comp.feet(p, feet);
+            for (int k = 0; k < n; ++k) {
+                const double t = feet[k];
+                if (!(t > c.t0 && t < c.t1) || !(norm(c.comp.at(t) - p) <= kCluster)) continue;
+                const Chord before{c.comp, c.t0, t, c.va, w}, after{c.comp, t, c.t1, w, c.vb};
+                for (const Chord* part : {&after, &before}) {
+                    const Chord& other = part == &after ? before : after;
+                    const Vec2 mid = c.comp.at(0.5 * (part->t0 + part->t1));
+                    if (boundary_hugs_chord(s.f, other, tol) && chord_inside(s, *part) && deep_inside(mid)) {
+                        out = *part;
+                        return true;
+                    }
+                }
+            }
+        } while (h != start && ++guard < 1000000);
+    }
+    return false;
 }
 
 // A chord may end at a vertex up to kFlatTip from its curve's end, where g is flat between them
