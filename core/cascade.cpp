@@ -63,10 +63,10 @@ double longest_edge2(const Corners& c) {
     return std::max({norm2(c[1] - c[0]), norm2(c[2] - c[1]), norm2(c[0] - c[2])});
 }
 
-// TargetSolver::slack() of target `c` solved whole, without solving it: its height over its longest
-// edge if its frame is degenerate, else 0. The frame is built only for nearly flat triangles (the
-// frame's test is a height below 1e-7 of the longest edge; the cross product's rounding is far
-// below the factor 10 kept here).
+// TargetSolver::sliver_slack() of target `c`, without solving it (solved whole, its slack() may be
+// more: claimed_sq()): its height over its longest edge if its frame is degenerate, else 0. The
+// frame is built only for nearly flat triangles (the frame's test is a height below 1e-7 of the
+// longest edge; the cross product's rounding is far below the factor 10 kept here).
 double sliver_slack(const Corners& c) {
     const double l2 = longest_edge2(c);
     if (norm(cross(c[1] - c[0], c[2] - c[0])) > 1e-6 * l2) return 0;
