@@ -673,9 +673,14 @@ std::string TargetSolver::validate(bool thorough) const {
                                      L.source, region_name(L.region), poly, direct, p.x, p.y), buf;
             // 3. The point lies in the region of the label's feature or of one tied with it, up to
             // how far the domain's boundary may sit from the region's line (twice the vertex
-            // tolerance: on a domain 1e-7 wide at a cluster of boundaries every point is that near).
+            // tolerance: on a domain 1e-7 wide at a cluster of boundaries every point is that near),
+            // or the region's line from where it is computed: where the sources' frame coordinates
+            // round by more than that (delta, as the mesh's continuity check has it), delta
+            // (generate_pairs6.py "zero_area" 7181: a target 1.6e-14 across, delta 2.8e-3, a
+            // domain's tip 1.3e-6 of T' outside its region, 2e-20 in world units).
+            const double reach = std::max(DomainMesh::kVertexTolerance, delta);
             bool inside = false;
-            for (const SourceRegion* r : tied) inside = inside || in_region(*r, p, (rim ? 4 : 2) * DomainMesh::kVertexTolerance);
+            for (const SourceRegion* r : tied) inside = inside || in_region(*r, p, (rim ? 4 : 2) * reach);
             if (thorough && !inside && !sliver)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
                                      L.source, region_name(L.region), p.x, p.y), buf;

@@ -2410,3 +2410,26 @@ TEST(Degenerate, CurveLeavingTheBoundaryAtAVertexJustOffItCutsTheFace) {
                                      {{0, 1, 2}, {3, 4, 5}, {3, 6, 4}, {6, 7, 4}, {8, 3, 5}, {6, 9, 7}});
     expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 41, 1e-9), 0); });
 }
+
+// Generate_pairs6.py "zero_area" 7181 (target 34 of B, nearest first): a target 1.6e-14 across at
+// the hub of a fan of A. Its sources' frame coordinates round by delta = 2.8e-3 of T', and a
+// domain's tip came out 1.3e-6 of T' outside its region (2e-20 in world units, far below the
+// coordinates' ulps, 7e-18): validate()'s region check allowed the vertex tolerance only, not
+// delta, as its continuity check does. The oracle: validate() after every insertion, its
+// polynomials against d^2 computed directly from the sources; the region check now holds each
+// point to the larger of the two.
+TEST(Degenerate, RegionCheckAllowsTheFramesRoundingOnATinyTarget) {
+    const TriangleMesh T = make_mesh({{0.054668154383334826, 0.064249255783258838, 0.042383113544536243},
+                                      {0.054668154383327554, 0.064249255783260739, 0.042383113544538997},
+                                      {0.054668154383341293, 0.064249255783254383, 0.042383113544534688}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0.054668154383334826, 0.064249255783258838, 0.042383113544536243},
+                                      {0.054662625556680507, 0.063282123805586107, 0.044968014008922197},
+                                      {0.05582784213119564, 0.064159546851164734, 0.041455211545112759},
+                                      {0.055716634533297275, 0.064688218690654192, 0.040157178616881208},
+                                      {0.05332998757319192, 0.065646900263975752, 0.040002389463260339},
+                                      {0.053873455452987627, 0.06346743917000916, 0.045268038071615425},
+                                      {0.052871625903031565, 0.064688071177531226, 0.043020895771436744}},
+                                     {{1, 0, 2}, {2, 0, 3}, {0, 4, 3}, {1, 5, 0}, {5, 6, 0}, {0, 6, 4}});
+    expect_constructions_hold(T, B, [](const TargetSolver&) {});
+}
