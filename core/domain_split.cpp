@@ -1326,31 +1326,29 @@ bool DomainMesh::chord_past_departure(const SplitCall& s, const Chord& c, double
     // kCluster of a curve along it, and the part "inside" is no departure (generate_pairs5.py
     // "seam_strip" 11761: a region line along a strip 1e-7 high, cut diagonally across it).
     auto deep_inside = [&](Vec2 p) { return point_in_face(s.f, p) && !near_boundary(s.f, p, kCluster); };
-    for (int start : faces_[s.f].loops) {
-        int h = start, guard = 0;
-        do {
-            const int w = half_[h].origin;
-            h = half_[h].next;
-            if (w == c.va || w == c.vb) continue;
-            const Vec2 p = vertices_[w].p;
-            double feet[3];
-            const int n = c.comp.feet(p, feet);
-            for (int k = 0; k < n; ++k) {
-                const double t = feet[k];
-                if (!(t > c.t0 && t < c.t1) || !(norm(c.comp.at(t) - p) <= kCluster)) continue;
-                const Chord before{c.comp, c.t0, t, c.va, w}, after{c.comp, t, c.t1, w, c.vb};
-                for (const Chord* part : {&after, &before}) {
-                    const Chord& other = part == &after ? before : after;
-                    const Vec2 mid = c.comp.at(0.5 * (part->t0 + part->t1));
-                    if (boundary_hugs_chord(s.f, other, tol) && chord_inside(s, *part) && deep_inside(mid)) {
-                        out = *part;
-                        return true;
-                    }
+    bool found = false;
+    for_each_half_edge(s.f, [&](int h) {
+        const int w = half_[h].origin;
+        if (found || w == c.va || w == c.vb) return;
+        const Vec2 p = vertices_[w].p;
+        double feet[3];
+        const int n = c.comp.feet(p, feet);
+        for (int k = 0; k < n && !found; ++k) {
+            const double t = feet[k];
+            if (!(t > c.t0 && t < c.t1) || !(norm(c.comp.at(t) - p) <= kCluster)) continue;
+            const Chord before{c.comp, c.t0, t, c.va, w}, after{c.comp, t, c.t1, w, c.vb};
+            for (const Chord* part : {&after, &before}) {
+                const Chord& other = part == &after ? before : after;
+                const Vec2 mid = c.comp.at(0.5 * (part->t0 + part->t1));
+                if (boundary_hugs_chord(s.f, other, tol) && chord_inside(s, *part) && deep_inside(mid)) {
+                    out = *part;
+                    found = true;
+                    break;
                 }
             }
-        } while (h != start && ++guard < 1000000);
-    }
-    return false;
+        }
+    });
+    return found;
 }
 
 // A chord may end at a vertex up to kFlatTip from its curve's end, where g is flat between them
