@@ -68,6 +68,10 @@ bool DomainMesh::insert(const SourceProjection& src, FaceCull cull, const Listen
     detach_orphan_loops(since, L);
     if (!merge_equal_neighbours(L, since) && unchanged) return false;
     dissolve_collinear_vertices();
+    if (unfold_needles(since)) {  // on whole arcs, the collinear vertices along them dissolved
+        merge_equal_neighbours(L, since);
+        dissolve_collinear_vertices();
+    }
     return true;
 }
 
@@ -196,6 +200,104 @@ void DomainMesh::give_to_region(int P, const SourceProjection& src, const Source
     ++relabels_;
     touch_face(P);
     if (L && L->on_relabel) L->on_relabel(P, old, lab);
+}
+
+// ---------------------------------------------------------------- folded needles
+//
+// A face's loop may run out along one straight arc and back along another that lies on the far
+// side of the first: a needle of the face turned inside out, thinner than the resolution, which
+// the face covers negatively and its two neighbours across those arcs both cover. Two region lines
+// crossing at a small angle, each cut within the vertex tolerance of where it is, leave one
+// (generate_pairs4.py "lod_surface" 28934, nearest first, side B, target 7: three near-coplanar
+// sources' lines crossing 5e-5 rad apart; the face went 3.4e-6 down one line and back up the
+// other, 2e-10 beside it, and across those arcs its quadratic, undercut there by the neighbours'
+// source by up to 4.6e-11, met theirs with a step of 2.3e-11 at d^2 1.2e-6). The areas still sum
+// to T''s, so only the continuity of d^2 across the arcs shows it (generate_pairs5.py
+// "coinc_retess_far" 15803 too: a needle 1.3e-5 long and 1.2e-9 wide, a step of 3.6e-10 at d^2
+// 1.6e-5). Unfolded: the face's loop takes the short straight chord across the needle's base
+// instead, and the needle goes to the neighbour on one side (the one whose quadratic is lower at
+// its middle), which then keeps it, the other neighbour's loop running round it. What is left at
+// the base, where the lines and the chord meet within the needle's width, is below the resolution
+// (a cluster of boundaries within kVertexTolerance of one point). Needles shorter than 8 times
+// that, or with a curved side, are left as they are.
+bool DomainMesh::unfold_needles(uint64_t since) {
+    bool any = false;
+    std::vector<int> faces = live_face_ids();
+    for (int f : faces) {
+        if (since > 0 && !((size_t)f < face_stamp_.size() && face_stamp_[f] > since)) continue;
+        for (int rounds = 0, again = 1; again && rounds < 16 && faces_[f].alive; ++rounds) {
+            again = 0;
+            for (size_t l = 0; l < faces_[f].loops.size() && !again; ++l) {
+                const int start = faces_[f].loops[l];
+                int h = start, guard = 0;
+                do {
+                    if (unfold_at(f, h)) { again = 1, any = true; break; }
+                    h = half_[h].next;
+                } while (h != start && ++guard < 1000000);
+            }
+        }
+    }
+    return any;
+}
+
+// The folded needle of face f at the origin v of half-edge h, between its previous arc (from u)
+// and h (to w), if there is one: unfolded (unfold_needles). True if it was.
+bool DomainMesh::unfold_at(int f, int h) {
+    int a = half_[h].prev, b = h;
+    if (!edges_[a >> 1].curve.straight() || !edges_[b >> 1].curve.straight() || (a >> 1) == (b >> 1) || half_[b].next == a) return false;
+    const ArcKind kind = edges_[a >> 1].kind;  // the chord across the base is of that kind
+    const Vec2 pv = vertices_[half_[b].origin].p, pu = vertices_[half_[a].origin].p, pw = vertices_[target(b)].p;
+    const Vec2 du = pu - pv, dw = pw - pv;
+    const double lu = norm(du), lw = norm(dw);
+    if (!(lu > 0 && lw > 0) || dot(du, dw) <= 0) return false;
+    // The face lies left of h: turning from dw clockwise to du, its angle at v is nearly a full
+    // turn, the needle between the arcs outside it.
+    const double cr = cross(dw, du), length = std::min(lu, lw), width = -cr / std::max(lu, lw);
+    if (!(cr < 0 && width <= kVertexTolerance && length >= 8 * kVertexTolerance)) return false;
+    const int A = half_[a ^ 1].face, B = half_[b ^ 1].face;
+    if (A <= 0 || B <= 0 || A == B || A == f || B == f || !faces_[A].alive || !faces_[B].alive) return false;
+    // The longer arc split at the foot of the shorter one's end, unless that is its own end.
+    if (std::fabs(lu - lw) > kTinyChord) {
+        const int e = lu < lw ? (b >> 1) : (a >> 1);
+        const Vec2 end = lu < lw ? pu : pw;  // the shorter arc's end, whose foot splits the longer
+        const Edge& E = edges_[e];
+        const Vec2 p0 = E.curve(E.z0), p1 = E.curve(E.z1);
+        const double t = dot(end - p0, p1 - p0) / norm2(p1 - p0), z = E.z0 + t * (E.z1 - E.z0);
+        if (!(t > 0 && t < 1)) return false;
+        split_edge(e, z);
+        if (lu < lw) b = half_[a].next; else a = half_[b].prev;  // the arcs at v, the longer one cut
+    }
+    const int x = half_[a].origin, y = target(b), ta = a ^ 1, tb = b ^ 1;
+    const Vec2 px = vertices_[x].p, py = vertices_[y].p;
+    const Vec2 axis = (du / lu + dw / lw) / norm(du / lu + dw / lw), mid = pv + axis * (0.5 * length);
+    const double qa = faces_[A].infinite ? HUGE_VAL : faces_[A].poly(mid), qb = faces_[B].infinite ? HUGE_VAL : faces_[B].poly(mid);
+    const int c = add_edge(segment_curve(px, py), 0, 1, line_through(px, py), kind, CurveKind::Line);
+    const int c0 = 2 * c, c1 = 2 * c + 1;  // x -> y in f; y -> x in the neighbour that loses the needle
+    auto link = [&](int p, int n) { half_[p].next = n; half_[n].prev = p; };
+    half_[c0].origin = x, half_[c1].origin = y;
+    half_[c0].face = f;
+    link(half_[a].prev, c0), link(c0, half_[b].next);
+    for (int& l : faces_[f].loops)
+        if (l == a || l == b) l = c0;
+    int gone;
+    if (qa <= qb) {  // A keeps the needle: B's loop runs y -> x -> v in place of y -> v
+        half_[c1].face = B, half_[a].face = B;
+        link(half_[tb].prev, c1), link(c1, a), link(a, half_[tb].next);
+        for (int& l : faces_[B].loops)
+            if (l == tb) l = c1;
+        gone = b >> 1;
+    } else {         // B keeps it: A's loop runs v -> y -> x in place of v -> x
+        half_[c1].face = A, half_[b].face = A;
+        link(half_[ta].prev, b), link(b, c1), link(c1, half_[ta].next);
+        for (int& l : faces_[A].loops)
+            if (l == ta) l = b;
+        gone = a >> 1;
+    }
+    edges_[gone].alive = false, edge_alive_[gone] = 0;
+    half_[2 * gone].face = half_[2 * gone + 1].face = -1;
+    touch_face(f), touch_face(A), touch_face(B);
+    ++stats_.unfolds;
+    return true;
 }
 
 // The debugger's view of a split: the pieces' ids (built only when someone listens).

@@ -89,7 +89,7 @@ public:
         double tie_slack = 0;
     };
     struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0, line_pairs = 0, hole_chords = 0,
-                   departures = 0; };
+                   departures = 0, unfolds = 0; };
 
     // Events a caller may watch while a source is inserted (all optional).
     struct Listener {
@@ -339,6 +339,8 @@ private:
     void cut_by_region(const SourceRegion& reg, const Listener* L);
     void apply_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
     void give_to_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
+    bool unfold_needles(uint64_t since);
+    bool unfold_at(int f, int h);
     void report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve);
 
     int add_vertex(Vec2 p);

@@ -2411,6 +2411,64 @@ TEST(Degenerate, CurveLeavingTheBoundaryAtAVertexJustOffItCutsTheFace) {
     expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 41, 1e-9), 0); });
 }
 
+// The angles of the faces at each vertex of the domain mesh, summed: 2 pi where the faces tile the
+// plane round it (face 0, the outside, included). A face turned inside out somewhere (a needle of
+// it folded over a neighbour) makes it 4 pi there. Counts the vertices where it is not 2 pi, but
+// for those in a cluster below the resolution.
+int folded_vertices(const DomainMesh& m) {
+    const auto& V = m.vertices();
+    const auto& E = m.edges();
+    const auto& H = m.half_edges();
+    auto out_dir = [&](int h) {  // the arc's tangent leaving h's origin
+        const auto& e = E[h >> 1];
+        const Vec2 d = (h & 1) ? e.curve.derivative(e.z1) * -1.0 : e.curve.derivative(e.z0);
+        return d / norm(d);
+    };
+    std::vector<double> sum(V.size(), 0.0);
+    for (size_t h = 0; h < H.size(); ++h) {
+        if (!E[h >> 1].alive) continue;
+        const Vec2 d1 = out_dir((int)h), d2 = out_dir(H[h].prev ^ 1);
+        double angle = std::atan2(cross(d1, d2), dot(d1, d2));
+        if (angle <= 0) angle += 2 * M_PI;
+        sum[H[h].origin] += angle;
+    }
+    // Below the resolution (vertices within kVertexTolerance of each other, where several boundaries
+    // cross) a piece that small may lie on the wrong side of a line (README "Resolution"): not counted.
+    auto clustered = [&](size_t v) {
+        for (size_t w = 0; w < V.size(); ++w)
+            if (w != v && V[w].alive && norm(V[w].p - V[v].p) <= DomainMesh::kVertexTolerance) return true;
+        return false;
+    };
+    int folded = 0;
+    for (size_t v = 0; v < V.size(); ++v)
+        folded += V[v].alive && sum[v] > 0 && std::fabs(sum[v] - 2 * M_PI) > 0.5 && !clustered(v);
+    return folded;
+}
+
+// Generate_pairs4.py "lod_surface" 28934 (target 7 of B, nearest first): the target is a coarse
+// triangle, its sources near-coplanar pieces of a 1-to-4 split of it 1.1e-3 away. Three region
+// lines cross T' 5e-5 rad apart; after the fourth insertion a face ran 3.4e-6 down one of them and
+// back up another 2e-10 beside it, on the far side: a needle turned inside out, covered by the two
+// neighbours across those arcs as well, whose source undercuts the face's by up to 4.6e-11 there
+// (a step of 2.3e-11 in d^2 at 1.2e-6 across the arc). DomainMesh::unfold_needles gives the needle
+// to a neighbour. The oracles: validate() after every insertion (each domain's polynomial against
+// brute-force d^2, d^2 continuous across every arc), and the faces' angles round every vertex
+// summing to 2 pi (folded_vertices).
+TEST(Degenerate, NeedleTurnedInsideOutGoesToANeighbour) {
+    const TriangleMesh T = make_mesh({{537.9215398564819, 431.05691878258597, -101.07444399825926},
+                                      {879.3109640337265, 213.65908441801503, 588.1032659500538},
+                                      {346.3076360026431, -376.7977216009889, 665.8379798795648}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{440.5825424147689, 28.652514081243623, 283.60320222014997},
+                                      {707.8501627113733, 323.1195254257001, 244.1251811143802},
+                                      {612.0432107844539, -80.80779476608735, 627.5813930532922},
+                                      {879.3109640337265, 213.65908441801503, 588.1032659500538},
+                                      {346.3076360026431, -376.7977216009889, 665.8379798795648},
+                                      {537.9215398564819, 431.05691878258597, -101.07444399825926}},
+                                     {{0, 1, 2}, {1, 3, 2}, {0, 2, 4}, {5, 1, 0}});
+    expect_constructions_hold(T, S, [](const TargetSolver& ts) { EXPECT_EQ(folded_vertices(*ts.domain_mesh()), 0); });
+}
+
 // Generate_pairs6.py "zero_area" 7181 (target 34 of B, nearest first): a target 1.6e-14 across at
 // the hub of a fan of A. Its sources' frame coordinates round by delta = 2.8e-3 of T', and a
 // domain's tip came out 1.3e-6 of T' outside its region (2e-20 in world units, far below the
