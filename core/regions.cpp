@@ -134,6 +134,27 @@ struct Projector {
     }
 };
 
+// A region's corner X where its lines i and j meet at less than kBevelAngle: the tip of a sliver's
+// face region, or a corner region of an angle near pi. Cut by those two lines alone, the tip runs
+// on past X as far as the lines stay within the domain mesh's tolerances of each other, which is
+// those over the angle: generate_pairs5.py "seam_strip" 211 (side B, target 17, the paper's
+// order): a sliver source's face region, a wedge of 6e-6 rad, kept its plane's quadratic 1.5e-4 of
+// T' past its tip, inside both lines to 9e-9, where the corner's quadratic is 2.3e-8 higher
+// (d^2 3.2e-7). Its bevel, the line through X across the wedge's bisector, leaves the region as it
+// is (the wedge lies on its inner side) and ends the tip at X, whatever the tolerances.
+constexpr double kBevelAngle = 0.1;
+void bevel(SourceRegion& r, size_t i, size_t j, Vec2 X) {
+    const HalfPlane &p = r.planes[i], &q = r.planes[j];
+    if (p.kind != HalfPlane::Line || q.kind != HalfPlane::Line) return;
+    const Vec2 s = p.n + q.n;  // along the wedge's bisector, into it; 2 sin(angle / 2) long
+    const double ls = norm(s);
+    if (!(ls < 2 * std::sin(0.5 * kBevelAngle) && ls > 1e-13)) return;
+    HalfPlane h;
+    h.n = s / ls;
+    h.offset = dot(h.n, X);
+    r.planes.push_back(h);
+}
+
 }  // namespace
 
 SourceProjection project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t index) {
@@ -203,6 +224,23 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     add(Region::ca, {P.halfspace(c, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a));
     add(Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(a, n));
     out.regions.resize(count);
+    // Every region's corners are the corners of the source carried along its normal n onto T''s
+    // plane (each line through a corner contains that normal): taken so, in 3D, not where two
+    // nearly parallel lines cross. A source seen nearly edge-on from T' has them far off: none.
+    const double nN = dot(n, F.normal);
+    if (!(std::fabs(nN) > 1e-6)) return;
+    auto corner = [&](const Vec3& v) {
+        Vec3 r = P.rel(v);
+        r = r - n * (dot(r, F.normal) / nN);
+        return Vec2{dot(F.e1, r), dot(F.e2, r)};
+    };
+    const Vec2 A = corner(a), B = corner(b), C = corner(c);
+    std::vector<SourceRegion>& R = out.regions;  // a, b, c, ab, bc, ca, abc
+    bevel(R[0], 0, 1, A), bevel(R[1], 0, 1, B), bevel(R[2], 0, 1, C);
+    bevel(R[3], 0, 1, A), bevel(R[3], 0, 2, B);
+    bevel(R[4], 0, 1, B), bevel(R[4], 0, 2, C);
+    bevel(R[5], 0, 1, C), bevel(R[5], 0, 2, A);
+    bevel(R[6], 0, 2, A), bevel(R[6], 0, 1, B), bevel(R[6], 1, 2, C);
 }
 
 double source_distance2(const TargetFrame& F, const std::array<Vec3, 3>& s, Vec2 p) {

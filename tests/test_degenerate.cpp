@@ -2469,6 +2469,45 @@ TEST(Degenerate, NeedleTurnedInsideOutGoesToANeighbour) {
     expect_constructions_hold(T, S, [](const TargetSolver& ts) { EXPECT_EQ(folded_vertices(*ts.domain_mesh()), 0); });
 }
 
+// Generate_pairs5.py "seam_strip" 211 (target 17 of B, the paper's order; four of its thirteen
+// sources, inserted in that order, make the same fault): the last source is a sliver whose face
+// region ends in a wedge of 6e-6 rad. Cut by its two lines alone, the wedge ran on 1.5e-4 of T' past
+// its tip, inside both lines to 9e-9, and kept the plane's quadratic there, 2.3e-8 below d^2
+// (3.2e-7): a step of that across an arc. Each region's corner below 0.1 rad now has a bevel
+// (regions.cpp). The oracles: validate() after every insertion (d^2 continuous across every arc),
+// then the polynomial against brute-force d over the sources at points of that stretch.
+TEST(Degenerate, SliverFaceRegionEndsAtItsTip) {
+    const TriangleMesh T = make_mesh({{1738475713.395395, -2045902066.3063233, -1513121292.7978249},
+                                      {1738661452.524767, -2046974477.8491502, -1513530549.3060231},
+                                      {1738663256.4513733, -2046861909.9048603, -1513712679.4121366}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{1738624629.2805736, -2046946319.6573184, -1513418312.3397837},
+                                      {1738543908.6503706, -2047065698.2383132, -1513250154.7070355},
+                                      {1738543908.8688874, -2047065699.356681, -1513250155.3960934},
+                                      {1738624629.4990904, -2046946320.7756863, -1513418313.0288417},
+                                      {1738611084.2345545, -2046718179.2763622, -1513792888.5614827},
+                                      {1738647588.7413595, -2046827543.6455245, -1513603809.4485886},
+                                      {1738647588.9598765, -2046827544.7638924, -1513603810.1376464}},
+                                     {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {5, 0, 3}});
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    const auto& o = fr.ccw_order;
+    DomainMesh mesh({fr.corners[o[0]], fr.corners[o[1]], fr.corners[o[2]]});
+    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+        mesh.insert(project_source(fr, S.corners(s), s));
+        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
+    }
+    const Vec2 from{0.903708596838, 0.104072536004}, to{0.903708560008, 0.104072732584};
+    int off = 0;
+    for (int i = 0; i <= 20; ++i) {
+        const Vec2 p = from + (to - from) * (i / 20.0);
+        const int f = mesh.face_at(p);
+        ASSERT_GT(f, 0);
+        const double d = brute_distance(fr.to_world(p), S) / fr.scale;
+        off += std::fabs(mesh.faces()[f].poly(p) - d * d) > 1e-6 * d * d;
+    }
+    EXPECT_EQ(off, 0);
+}
+
 // Generate_pairs6.py "zero_area" 7181 (target 34 of B, nearest first): a target 1.6e-14 across at
 // the hub of a fan of A. Its sources' frame coordinates round by delta = 2.8e-3 of T', and a
 // domain's tip came out 1.3e-6 of T' outside its region (2e-20 in world units, far below the
