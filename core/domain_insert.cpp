@@ -244,7 +244,9 @@ bool DomainMesh::unfold_needles(uint64_t since) {
 // and h (to w), if there is one: unfolded (unfold_needles). True if it was.
 bool DomainMesh::unfold_at(int f, int h) {
     int a = half_[h].prev, b = h;
-    if (!edges_[a >> 1].curve.straight() || !edges_[b >> 1].curve.straight() || (a >> 1) == (b >> 1) || half_[b].next == a) return false;
+    if (!edges_[a >> 1].curve.straight() || !edges_[b >> 1].curve.straight() || (a >> 1) == (b >> 1) || half_[b].next == a ||
+        half_[a].origin == target(b))  // both arcs between the same two vertices: no base to cut
+        return false;
     const ArcKind kind = edges_[a >> 1].kind;  // the chord across the base is of that kind
     const Vec2 pv = vertices_[half_[b].origin].p, pu = vertices_[half_[a].origin].p, pw = vertices_[target(b)].p;
     const Vec2 du = pu - pv, dw = pw - pv;
