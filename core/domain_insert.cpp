@@ -262,10 +262,8 @@ bool DomainMesh::unfold_at(int f, int h) {
     if (std::fabs(lu - lw) > kTinyChord) {
         const int e = lu < lw ? (b >> 1) : (a >> 1);
         const Vec2 end = lu < lw ? pu : pw;  // the shorter arc's end, whose foot splits the longer
-        const Edge& E = edges_[e];
-        const Vec2 p0 = E.curve(E.z0), p1 = E.curve(E.z1);
-        const double t = dot(end - p0, p1 - p0) / norm2(p1 - p0), z = E.z0 + t * (E.z1 - E.z0);
-        if (!(t > 0 && t < 1)) return false;
+        const double z = straight_foot(e, end);
+        if (!(z > edges_[e].z0 && z < edges_[e].z1)) return false;
         split_edge(e, z);
         if (lu < lw) b = half_[a].next; else a = half_[b].prev;  // the arcs at v, the longer one cut
     }
@@ -295,8 +293,7 @@ bool DomainMesh::unfold_at(int f, int h) {
             if (l == ta) l = b;
         gone = a >> 1;
     }
-    edges_[gone].alive = false, edge_alive_[gone] = 0;
-    half_[2 * gone].face = half_[2 * gone + 1].face = -1;
+    drop_edge(gone);
     touch_face(f), touch_face(A), touch_face(B);
     ++stats_.unfolds;
     return true;
@@ -341,9 +338,13 @@ void DomainMesh::remove_edge(int e) {
         half_[hp].next = tn; half_[tn].prev = hp;
         half_[tp].next = hn; half_[hn].prev = tp;
     }
+    drop_edge(e);
+}
+
+void DomainMesh::drop_edge(int e) {
     edges_[e].alive = false;
     edge_alive_[e] = 0;
-    half_[h].face = half_[t].face = -1;
+    half_[2 * e].face = half_[2 * e + 1].face = -1;
 }
 
 // A loop of a face that its outer loop does not enclose, of no area (a spike: two vertices 7e-7

@@ -366,6 +366,8 @@ private:
     void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
     void rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids);
     void remove_edge(int e);
+    void drop_edge(int e);  // marks edge e removed, its half-edges in no face (no splicing)
+    double straight_foot(int e, Vec2 p) const;  // the parameter z of p's foot on straight arc e
     bool detach_orphan_loops(uint64_t since, const Listener* listener);
     void dissolve_collinear_vertices();
     double edge_max(int e, const Quadratic2& q, Vec2* where);

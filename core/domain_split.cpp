@@ -77,6 +77,14 @@ double wrap2pi(double a) {
 
 // ---------------------------------------------------------------- topology edits
 
+// On a straight arc (its curve affine in z), the parameter of the foot of p.
+double DomainMesh::straight_foot(int e, Vec2 p) const {
+    const Edge& E = edges_[e];
+    assert(E.curve.straight());
+    const Vec2 p0 = E.curve(E.z0), p1 = E.curve(E.z1);
+    return E.z0 + (E.z1 - E.z0) * dot(p - p0, p1 - p0) / norm2(p1 - p0);
+}
+
 int DomainMesh::split_edge(int e, double z) {
     Vec2 p = edges_[e].curve(z);
     int v = add_vertex(p);
@@ -906,8 +914,7 @@ void DomainMesh::add_line_pair_centre(SplitCall& s) {
             const Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
             if (!E.curve.straight() || !(segment_distance(m, a, b) <= kCluster)) continue;
             if (!(norm(m - a) > kSnap && norm(m - b) > kSnap)) continue;
-            const Vec2 p0 = E.curve(E.z0), p1 = E.curve(E.z1);
-            const double z = E.z0 + (E.z1 - E.z0) * dot(m - p0, p1 - p0) / norm2(p1 - p0);
+            const double z = straight_foot(h >> 1, m);
             if (!(z > E.z0 && z < E.z1)) continue;
             vm = split_edge(h >> 1, z);
             collect_half_edges(s.f, tmp_.hes);
