@@ -25,6 +25,7 @@ struct TargetFrame {
     bool degenerate = false;          // zero (or nearly zero) area: handled as a segment or point
     Vec3 to_world(Vec2 p) const { return origin + (p.x * scale) * e1 + (p.y * scale) * e2; }
     Vec2 to_frame(const Vec3& p) const { Vec3 w = (p - origin) / scale; return {dot(w, e1), dot(w, e2)}; }
+    std::array<Vec2, 3> ccw_corners() const { return {corners[ccw_order[0]], corners[ccw_order[1]], corners[ccw_order[2]]}; }
     static TargetFrame make(const std::array<Vec3, 3>& corners);
 };
 

@@ -75,8 +75,7 @@ TargetSolver::TargetSolver(const VoxelGrid& grid, int side, uint32_t target, con
     for (const Vec3& c : corners_) reach_ = std::max(reach_, norm(c - centroid_));
     reach_ = reach_ * (1 + 1e-12) + 1e-300;
     if (!frame_.degenerate) {
-        const auto& o = frame_.ccw_order;
-        mesh_ = std::make_unique<DomainMesh>(std::array<Vec2, 3>{frame_.corners[o[0]], frame_.corners[o[1]], frame_.corners[o[2]]});
+        mesh_ = std::make_unique<DomainMesh>(frame_.ccw_corners());
     }
 }
 
@@ -307,8 +306,8 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
     if (watching()) {
         Event e = make_event(EventKind::RegionsProjected);
         e.source = (int32_t)s;
-        const auto& o = frame_.ccw_order;
-        std::vector<Vec2> tri{frame_.corners[o[0]], frame_.corners[o[1]], frame_.corners[o[2]]};
+        const auto c = frame_.ccw_corners();
+        std::vector<Vec2> tri(c.begin(), c.end());
         for (const SourceRegion& r : proj.regions) e.regions.push_back({r.kind, clip_convex(tri, r.planes)});
         emit(e);
     }
@@ -499,8 +498,7 @@ double TargetSolver::direct_d2(Vec2 p) const {
 // (Generate_pairs.py "perp" 65235, A to B: the maximum taken 1.4e-10 outside the middle of an
 // edge was 1.2e-10 above the truth, and the certified interval missed it.)
 Vec2 TargetSolver::onto_target(Vec2 p) const {
-    const auto& o = frame_.ccw_order;
-    const Vec2 c[3] = {frame_.corners[o[0]], frame_.corners[o[1]], frame_.corners[o[2]]};
+    const std::array<Vec2, 3> c = frame_.ccw_corners();
     bool inside = true;
     for (int k = 0; k < 3; ++k) inside = inside && cross(c[(k + 1) % 3] - c[k], p - c[k]) >= 0;
     if (inside) return p;

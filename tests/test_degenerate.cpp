@@ -220,8 +220,7 @@ TEST(LabelCheck, FeaturesEquallyNearToPrecisionAreTies) {
         const SourceProjection full = project_source(fr, src, 0);
         SourceProjection edge_only;  // e's quadratic over all of T', labelled e
         edge_only.regions.push_back(SourceRegion{Region::ca, {}, *region_quadratic(full, Region::ca)});
-        const auto& o = fr.ccw_order;
-        DomainMesh mesh({fr.corners[o[0]], fr.corners[o[1]], fr.corners[o[2]]});
+        DomainMesh mesh(fr.ccw_corners());
         mesh.insert(edge_only);
         const LabelCheck L = check_labels(mesh, fr, {src}, {0});
         ASSERT_GT(L.samples, 1000) << theta;
@@ -254,8 +253,7 @@ TEST(LabelCheck, ZeroAreaSourceFeaturesAsItsProjectionNamesThem) {
     SourceProjection edge_only;  // the triangle's edge ab over all of T'
     edge_only.source = 1;
     edge_only.regions.push_back(SourceRegion{Region::ab, {}, *region_quadratic(full, Region::ab)});
-    const auto& o = fr.ccw_order;
-    DomainMesh mesh({fr.corners[o[0]], fr.corners[o[1]], fr.corners[o[2]]});
+    DomainMesh mesh(fr.ccw_corners());
     mesh.insert(edge_only);
     const LabelCheck L = check_labels(mesh, fr, {segment, tri}, {0, 1});
     ASSERT_GT(L.samples, 1000);
@@ -309,8 +307,7 @@ TEST(LabelCheck, DistanceWithinATieClassesSpreadIsATie) {
         SourceProjection edge_only;  // the nearer line's quadratic over all of T', labelled its edge
         edge_only.source = 2;
         edge_only.regions.push_back(SourceRegion{Region::ab, {}, *region_quadratic(a, Region::ab)});
-        const auto& o = fr.ccw_order;
-        DomainMesh mesh({fr.corners[o[0]], fr.corners[o[1]], fr.corners[o[2]]});
+        DomainMesh mesh(fr.ccw_corners());
         mesh.insert(edge_only);
         LabelCheckOptions opt;
         opt.resolution = 1024;
@@ -2490,8 +2487,7 @@ TEST(Degenerate, SliverFaceRegionEndsAtItsTip) {
                                       {1738647588.9598765, -2046827544.7638924, -1513603810.1376464}},
                                      {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {5, 0, 3}});
     const TargetFrame fr = TargetFrame::make(T.corners(0));
-    const auto& o = fr.ccw_order;
-    DomainMesh mesh({fr.corners[o[0]], fr.corners[o[1]], fr.corners[o[2]]});
+    DomainMesh mesh(fr.ccw_corners());
     for (uint32_t s = 0; s < S.num_triangles(); ++s) {
         mesh.insert(project_source(fr, S.corners(s), s));
         EXPECT_EQ(mesh.validate(), "") << "after source " << s;

@@ -566,8 +566,7 @@ TEST(DomainCaches, KeptGeometryMatchesTheSampledBoundary) {
         std::array<Vec3, 3> tc{Vec3{0, 0, 0}, Vec3{1, 0.1 * U(rng), 0.05 * U(rng)}, Vec3{0.3 * U(rng), 0.9, 0.1 * U(rng)}};
         TargetFrame frame = TargetFrame::make(tc);
         ASSERT_FALSE(frame.degenerate);
-        const auto& o = frame.ccw_order;
-        DomainMesh dm(std::array<Vec2, 3>{frame.corners[o[0]], frame.corners[o[1]], frame.corners[o[2]]});
+        DomainMesh dm(frame.ccw_corners());
         for (int s = 0; s < 14; ++s) {
             Vec3 c{0.4 + 0.5 * U(rng), 0.4 + 0.5 * U(rng), 0.25 * U(rng)};
             std::array<Vec3, 3> sc;
