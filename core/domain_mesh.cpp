@@ -451,11 +451,22 @@ bool DomainMesh::interior_point(int f, Vec2& out) const {
     return false;
 }
 
+// A straight arc is the segment between its vertices (as point_in_face has it), not its line,
+// which the arc's ends (polished vertices) may be off: stepped from the line's middle, a needle
+// piece 2.8e-6 long and 4.2e-10 wide at its base, whose apex is 4e-10 off the line, was missed at
+// every step, interior_point's fallback found a point at its short end, and the piece went to a
+// region 1.8e-6 away from it (generate_pairs4.py "thin_shell_far" 37587, side A, target 0, the
+// debugger's order, leftover_region). Also generate_pairs7.py "bowtie_vertex" 1274.
 bool DomainMesh::point_beside(int f, int h, double len, double step, Vec2& out) const {
     const Edge& E = edges_[h >> 1];
     const double z = 0.5 * (E.z0 + E.z1);
     Vec2 m = E.curve(z), d = E.curve.derivative(z);
     if (h & 1) d = -1.0 * d;
+    if (E.curve.straight()) {
+        const Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
+        m = 0.5 * (a + b);
+        d = b - a;
+    }
     const double l = norm(d);
     if (l == 0) return false;
     const Vec2 cand = m + (step * std::min(1.0, len) / l) * perp(d);

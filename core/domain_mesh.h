@@ -333,6 +333,7 @@ private:
     // half-edge h (interior_point, long_arc_point); false if that is not in f.
     bool point_beside(int f, int h, double len, double step, Vec2& out) const;
     unsigned regions_holding_corners(int P, const SourceProjection& src, unsigned mask) const;
+    unsigned regions_holding_piece(int P, const SourceProjection& src, unsigned mask) const;
     bool arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g, const Box2& b) const;
     bool lines_nowhere_nearer(const SourceRegion& reg, const Quadratic2& g) const;
 

@@ -156,15 +156,23 @@ size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned 
 // over, and the cracks between regions: where three or more region lines cross within kCluster of
 // each other, a region's part of the face may be a piece that small, and the cut that should take
 // it in drops its chord as hugging the boundary (domain_split.cpp) and gives it the face's side.
-// Each later region, whose lines are the same lines, leaves it outside too, and the piece keeps
-// the old domain where the source is far nearer (independent pair "parallel_offset" 19917: a
-// triangle 1e-7 across at the projection of a source's corner on T''s edge kept d^2 = 0.057 where
-// the source gives 3e-15). The same holds for a sliver along one region line, as long as it likes
-// but no wider than kCluster ("sliver" 11746: 6.6e-6 by 1e-8 at a needle source's corner, left
-// with a domain 0.05 away, d^2 0.0026 beside 2e-11). The paper's insertion gives what is left to
-// the last region; here a piece goes to the region that holds its interior point if that region
-// may be nearer on F and holds every corner of the piece, up to kCluster: such a piece is no
-// region's part of any face but by rounding.
+// Each later region, whose lines are the same lines, leaves it outside too, and the piece keeps the
+// old domain where the source is far nearer (independent pair "parallel_offset" 19917: a triangle
+// 1e-7 across at the projection of a source's corner on T''s edge kept d^2 = 0.057 where the source
+// gives 3e-15). The same holds for a sliver along one region line, as long as it likes but no wider
+// than kCluster ("sliver" 11746: 6.6e-6 by 1e-8 at a needle source's corner, left with a domain
+// 0.05 away, d^2 0.0026 beside 2e-11). The paper's insertion gives what is left to the last region;
+// here a piece goes to a region that may be nearer on F and holds all of it (its corners and curved
+// arcs, regions_holding_piece) and a point beside its longest arc (long_arc_point), up to kCluster:
+// such a piece is no region's part of any face but by rounding. Of several, the one deepest at that
+// point. (Not merely the region deepest there: a sliver 1.2e-7 wide along T''s edge, across which
+// runs the line between a source's edge and face regions, was dropped by both cuts, and its point,
+// from interior_point at the short arc at its end, lay deepest in a corner region; from its long
+// arc it may lie just inside the face region, which misses a far corner by 1.03e-7, where the edge
+// region holds it all (generate_pairs4.py "f32_export" 21117, target 7 of B, the paper's order: the
+// sliver kept d^2 0.2 where the source gives 1e-15). Nor the deepest of the regions holding every
+// corner alone: generate_pairs6.py "zero_area" 3977's face region held a piece's corners but not
+// its middle, 6.7e-7 beyond.)
 void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
     std::vector<int>& cracks = tmp_.inside;  // free again: the region loop is done with it
     cracks.clear();
@@ -172,9 +180,17 @@ void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
         if (regions_holding_corners(P, src, may_win)) cracks.push_back(P);
     for (int P : cracks) {
         Vec2 x;
-        if (!interior_point(P, x)) continue;
-        const size_t best = deepest_region(src, x);
-        if (regions_holding_corners(P, src, may_win & (1u << best))) apply_region(P, src, src.regions[best], nullptr);
+        if (!long_arc_point(P, x)) continue;
+        const unsigned holding = regions_holding_piece(P, src, may_win);
+        const size_t R = src.regions.size();
+        size_t best = R;
+        double best_margin = -kCluster;  // held up to kCluster
+        for (size_t k = 0; k < R; ++k) {
+            if (!(holding >> k & 1u)) continue;
+            const double m = region_margin(src.regions[k], x);
+            if (m > best_margin || (best == R && m == best_margin)) best_margin = m, best = k;
+        }
+        if (best < R) apply_region(P, src, src.regions[best], nullptr);
     }
 }
 
@@ -183,6 +199,23 @@ unsigned DomainMesh::regions_holding_corners(int P, const SourceProjection& src,
     for_each_half_edge(P, [&](int h) {
         for (size_t k = 0; k < src.regions.size(); ++k)
             if ((mask >> k & 1u) && !in_region(src.regions[k], vertices_[half_[h].origin].p, kCluster)) mask &= ~(1u << k);
+    });
+    return mask;
+}
+
+// The regions of `mask` within kCluster of all of face P: of its corners and of points along its
+// curved arcs, which may bulge out of a region whose lines hold their ends (the region is convex,
+// so a straight-sided piece whose corners it holds lies in it). A lens between a region line and a
+// conic, its two corners 1.6e-6 apart on the line and its arc 1.4e-6 across it, is not the region's
+// (generate_pairs3.py "dup_faces" 47130, target 3 of A, nearest first, a crack rule that asked for
+// the corners and one point beside the straight arc).
+unsigned DomainMesh::regions_holding_piece(int P, const SourceProjection& src, unsigned mask) const {
+    mask = regions_holding_corners(P, src, mask);
+    for_each_half_edge(P, [&](int h) {
+        if (edges_[h >> 1].curve.straight()) return;
+        for (double t : {0.25, 0.5, 0.75})
+            for (size_t k = 0; k < src.regions.size(); ++k)
+                if ((mask >> k & 1u) && !in_region(src.regions[k], edge_point(h >> 1, t), kCluster)) mask &= ~(1u << k);
     });
     return mask;
 }
