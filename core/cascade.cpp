@@ -304,8 +304,14 @@ private:
         // Split while the piece is larger than the triangles of B near it (a construction costs about
         // as many insertions as the sources it spans, a bound one query), and while its centroid is
         // below L down to a fraction of them: the bounds tighten as pieces shrink until one drops it.
+        // A source smaller than a thousandth of its distance (a point, a tiny triangle) counts as
+        // that large: below it, a smaller piece spans no fewer sources (those within reach of its
+        // centroid), and splitting down to kMaxDepth made 4^10 pieces, each solved
+        // (generate_pairs7.py "points_on_circle" 1269: 50 point triangles round a target 5e-10
+        // across took minutes; a triangle 1e-9 across under one point, 1,048,577 solves and 2 s).
         const double ratio = p.centre_sq >= threshold() ? kSplitRatio : kFineRatio;
-        if (p.depth < kMaxDepth && longest_edge2(p.c) > ratio * ratio * longest_edge2(B_.corners(p.cand[0]))) {
+        const double source2 = std::max(longest_edge2(B_.corners(p.cand[0])), 1e-6 * p.centre_sq);
+        if (p.depth < kMaxDepth && longest_edge2(p.c) > ratio * ratio * source2) {
             // Points 0-2 are the corners, 3-5 the edge midpoints; each gets its nearest triangle.
             const Vec3 pt[6] = {p.c[0], p.c[1], p.c[2], 0.5 * (p.c[0] + p.c[1]), 0.5 * (p.c[1] + p.c[2]),
                                 0.5 * (p.c[2] + p.c[0])};

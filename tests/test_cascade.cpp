@@ -115,6 +115,22 @@ TEST(Cascade, CoarseAgainstFine) {
     EXPECT_LT(r.a_to_b.exact_solves, 128u / 2);
 }
 
+// Sources much smaller than their distance (points, tiny triangles): generate_pairs7.py
+// "points_on_circle" 1269 (50 point triangles round a target 5e-10 across) split the target into
+// 4^10 pieces, one exact construction each, and took minutes. A triangle 1e-9 across under a point
+// at height 1 took 1,048,577 constructions. The oracle: the distance from that triangle's farthest
+// corner to the point, sqrt(1 + 1e-18), and d(B, A) = 1 (the foot of the point is a corner).
+TEST(Cascade, TinyTargetUnderAPointIsNotSplitToTheLimit) {
+    const TriangleMesh A = mesh_of({{0, 0, 0}, {1e-9, 0, 0}, {0, 1e-9, 0}}, {{0, 1, 2}});
+    const TriangleMesh B = mesh_of({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}}, {{0, 1, 2}});
+    const HausdorffResult r = hausdorff(A, B);
+    EXPECT_LT(r.a_to_b.exact_solves, 64u);
+    EXPECT_NEAR(r.a_to_b.distance, std::sqrt(1 + 1e-18), 1e-15);
+    EXPECT_LE(r.a_to_b.lower, std::sqrt(1 + 1e-18));
+    EXPECT_GE(r.a_to_b.upper, std::sqrt(1 + 1e-18));
+    EXPECT_NEAR(r.b_to_a.distance, 1.0, 1e-15);
+}
+
 TEST(Cascade, DegenerateConfigurations) {
     auto bump = [](double x, double y) { return 0.15 * std::sin(x) * std::cos(y - 0.3); };
     TriangleMesh flat = height_field(4, [](double, double) { return 0.0; });
