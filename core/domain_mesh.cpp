@@ -459,13 +459,15 @@ bool DomainMesh::interior_point(int f, Vec2& out) const {
 // debugger's order, leftover_region). Also generate_pairs7.py "bowtie_vertex" 1274.
 bool DomainMesh::point_beside(int f, int h, double len, double step, Vec2& out) const {
     const Edge& E = edges_[h >> 1];
-    const double z = 0.5 * (E.z0 + E.z1);
-    Vec2 m = E.curve(z), d = E.curve.derivative(z);
-    if (h & 1) d = -1.0 * d;
+    Vec2 m, d;
     if (E.curve.straight()) {
         const Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
         m = 0.5 * (a + b);
         d = b - a;
+    } else {
+        const double z = 0.5 * (E.z0 + E.z1);
+        m = E.curve(z), d = E.curve.derivative(z);
+        if (h & 1) d = -1.0 * d;
     }
     const double l = norm(d);
     if (l == 0) return false;

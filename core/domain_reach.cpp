@@ -57,6 +57,14 @@ bool clip_param(const HalfPlane& hp, Vec2 o, Vec2 u, double& lo, double& hi) {
 bool boxes_miss(const Box2& a, const Box2& b) {
     return a.hi.x < b.lo.x || a.lo.x > b.hi.x || a.hi.y < b.lo.y || a.lo.y > b.hi.y;
 }
+
+// The regions of `mask` within `tol` of p.
+unsigned regions_holding(const SourceProjection& src, Vec2 p, unsigned mask, double tol) {
+    for (size_t k = 0; k < src.regions.size(); ++k)
+        if ((mask >> k & 1u) && !in_region(src.regions[k], p, tol)) mask &= ~(1u << k);
+    return mask;
+}
+
 }  // namespace
 
 // Face F (alive when the insertion began): the regions that may be nearer somewhere on it are
@@ -182,24 +190,15 @@ void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
         Vec2 x;
         if (!long_arc_point(P, x)) continue;
         const unsigned holding = regions_holding_piece(P, src, may_win);
-        const size_t R = src.regions.size();
-        size_t best = R;
-        double best_margin = -kCluster;  // held up to kCluster
-        for (size_t k = 0; k < R; ++k) {
-            if (!(holding >> k & 1u)) continue;
-            const double m = region_margin(src.regions[k], x);
-            if (m > best_margin || (best == R && m == best_margin)) best_margin = m, best = k;
-        }
-        if (best < R) apply_region(P, src, src.regions[best], nullptr);
+        if (!holding) continue;
+        const size_t best = deepest_region(src, x, holding);
+        if (in_region(src.regions[best], x, kCluster)) apply_region(P, src, src.regions[best], nullptr);
     }
 }
 
 // The regions of `mask` within kCluster of every corner of face P.
 unsigned DomainMesh::regions_holding_corners(int P, const SourceProjection& src, unsigned mask) const {
-    for_each_half_edge(P, [&](int h) {
-        for (size_t k = 0; k < src.regions.size(); ++k)
-            if ((mask >> k & 1u) && !in_region(src.regions[k], vertices_[half_[h].origin].p, kCluster)) mask &= ~(1u << k);
-    });
+    for_each_half_edge(P, [&](int h) { mask = regions_holding(src, vertices_[half_[h].origin].p, mask, kCluster); });
     return mask;
 }
 
@@ -213,9 +212,7 @@ unsigned DomainMesh::regions_holding_piece(int P, const SourceProjection& src, u
     mask = regions_holding_corners(P, src, mask);
     for_each_half_edge(P, [&](int h) {
         if (edges_[h >> 1].curve.straight()) return;
-        for (double t : {0.25, 0.5, 0.75})
-            for (size_t k = 0; k < src.regions.size(); ++k)
-                if ((mask >> k & 1u) && !in_region(src.regions[k], edge_point(h >> 1, t), kCluster)) mask &= ~(1u << k);
+        for (double t : {0.25, 0.5, 0.75}) mask = regions_holding(src, edge_point(h >> 1, t), mask, kCluster);
     });
     return mask;
 }

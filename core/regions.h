@@ -93,11 +93,15 @@ struct SourceProjection {
     double delta = 0;
 };
 // The region of `src` that p lies deepest in (the first of equals): the regions tile the plane.
-inline size_t deepest_region(const SourceProjection& src, Vec2 p) {
-    size_t best = 0;
+// Only among the regions of `mask` if given (the number of regions if it has none).
+inline size_t deepest_region(const SourceProjection& src, Vec2 p, unsigned mask = ~0u) {
+    size_t best = src.regions.size();
     double best_margin = -HUGE_VAL;
-    for (size_t k = 0; k < src.regions.size(); ++k)
-        if (const double m = region_margin(src.regions[k], p); m > best_margin) best_margin = m, best = k;
+    for (size_t k = 0; k < src.regions.size(); ++k) {
+        if (!(mask >> k & 1u)) continue;
+        const double m = region_margin(src.regions[k], p);
+        if (best == src.regions.size() || m > best_margin) best_margin = m, best = k;
+    }
     return best;
 }
 SourceProjection project_source(const TargetFrame& frame, const std::array<Vec3, 3>& source, uint32_t index);
