@@ -354,6 +354,7 @@ private:
     Vec2 out_tangent(int h) const;                   // direction leaving origin(h)
     int loop_crossings(int start, Vec2 p) const;      // ray crossings of one loop (parity: inside)
     int outer_across(int hole, const std::vector<int>& cycles, const std::vector<int>& outers) const;  // a lens's piece
+    void add_piece(int reuse, bool first, int loop, std::vector<int>& fids);  // rebuild_faces
     int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose);
     bool loose_tangent(int h) const;
     int past_connector(int h) const;
@@ -365,7 +366,7 @@ private:
     void hook_paths(int face, const std::vector<int>& hes, int force_hook, int force_wedge);
     void rehook_chords(SplitCall& s);
     void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
-    void rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids);
+    void rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids, bool split = false);
     void remove_edge(int e);
     void drop_edge(int e);  // marks edge e removed, its half-edges in no face (no splicing)
     double straight_foot(int e, Vec2 p) const;  // the parameter z of p's foot on straight arc e

@@ -243,7 +243,7 @@ void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::v
     }
 }
 
-void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids) {
+void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids, bool split) {
     touch_face(reuse);
     std::vector<int>& cycles = tmp_.cycles;
     std::vector<double>& areas = tmp_.areas;
@@ -273,18 +273,7 @@ void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vect
         // New faces start as copies of `reuse` (its quadratic and label), without its loops.
         assert(faces_[reuse].alive);  // (dead faces are never revived: see live_faces_)
         faces_[reuse].loops.clear();
-        const Face proto = faces_[reuse];
-        for (size_t k = 0; k < outers.size(); ++k) {
-            int fid = reuse;
-            if (k > 0) {
-                faces_.push_back(proto);
-                fid = (int)faces_.size() - 1;
-                live_faces_.push_back(fid);
-            }
-            faces_[fid].loops.assign(1, cycles[outers[k]]);
-            faces_[fid].alive = true;
-            fids.push_back(fid);
-        }
+        for (size_t k = 0; k < outers.size(); ++k) add_piece(reuse, k == 0, cycles[outers[k]], fids);
     }
     for (int hi : holes) {
         // A point on the hole lies strictly inside exactly the outer loops that enclose the hole,
@@ -303,12 +292,35 @@ void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vect
             if ((n & 1) && areas[outers[k]] < best_area) { best = (int)k; best_area = areas[outers[k]]; }
         }
         if (best < 0) best = outer_across(cycles[hi], cycles, outers), ++stats_.warnings;
+        // Neither enclosed nor across, in a split: a lobe turned inside out by rounding, a piece of
+        // its own (merging, a face stays one face).
+        // (Generate_pairs6.py "stacked_layers" 12326, nearest first: a pinch moved a vertex 1e-12
+        // onto T''s edge, and the lobe beyond, a sliver along that edge 0.25 long, came out with an
+        // area of -3.7e-14. Made a hole of the face's other lobe, a sliver 0.125 long elsewhere,
+        // its arcs far across the region line gave that lobe their side: d^2 up to 0.0016 where
+        // the truth is 2.2e-14.)
+        if (best < 0 && split) { add_piece(reuse, false, cycles[hi], fids); continue; }
+        if (best < 0) best = 0;
         faces_[fids[best]].loops.push_back(cycles[hi]);
     }
     for (int fid : fids) {
         for_each_half_edge(fid, [&](int h) { half_[h].face = fid; });
         touch_face(fid);
     }
+}
+
+// A piece of the split face `reuse` bounded by `loop`: `reuse` itself if `first`, else a new face
+// with its quadratic and label; its id is appended to fids.
+void DomainMesh::add_piece(int reuse, bool first, int loop, std::vector<int>& fids) {
+    int fid = reuse;
+    if (!first) {
+        faces_.push_back(faces_[reuse]);
+        fid = (int)faces_.size() - 1;
+        live_faces_.push_back(fid);
+    }
+    faces_[fid].loops.assign(1, loop);
+    faces_[fid].alive = true;
+    fids.push_back(fid);
 }
 
 // The loop from b runs along the loop from a the other way: each of its half-edges is the twin of
@@ -331,7 +343,7 @@ bool DomainMesh::reverse_loops(int a, int b) const {
 // a chord within kOffCurve of it). Left to the first piece whatever its side, such a lens decided
 // that piece's side by its arcs far across the next curve (independent pair "perpendicular"
 // 33651: a piece where a source's corner is nearer given to its edge, d^2 0.0054 above the truth).
-// The first outer loop if none is across.
+// -1 if none is across.
 int DomainMesh::outer_across(int hole, const std::vector<int>& cycles, const std::vector<int>& outers) const {
     for (size_t k = 0; k < outers.size(); ++k) {
         const int start = cycles[outers[k]];
@@ -345,7 +357,7 @@ int DomainMesh::outer_across(int hole, const std::vector<int>& cycles, const std
             h = half_[h].next;
         } while (h != start && ++guard < 1000000);
     }
-    return 0;
+    return -1;
 }
 
 // Newton's method onto the crossing of two curves (a vertex of the split), kept only if it moved
@@ -1505,7 +1517,7 @@ void DomainMesh::insert_chords(SplitCall& s) {
 // 5. The face's half-edges now form several loops: one face per outer loop, each given its side.
 void DomainMesh::rebuild_split_faces(SplitCall& s, std::vector<SplitPiece>& out) {
     std::vector<int>& fids = tmp_.fids;
-    rebuild_faces(tmp_.hes, s.f, fids);
+    rebuild_faces(tmp_.hes, s.f, fids, true);
     std::vector<int>& fh = tmp_.fh;
     for (int fid : fids) {
         int pos = 0, neg = 0;

@@ -2095,6 +2095,44 @@ TEST(Degenerate, LobeCutAtItsBaseIsNotTurnedInsideOut) {
     expect_constructions_hold(T, B, [&](const TargetSolver& ts) { EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0); });
 }
 
+// Generate_pairs6.py "stacked_layers" 12326 (target 17 of B against four of A's triangles, in
+// every order): a domain made of two slivers 4e-7 wide meeting at (2/3, 0) in the frame, one along
+// T''s edge and one along the line x + y = 2/3. A region line cut it where the first is 1e-12 thin:
+// the pinch there moved a vertex onto T''s edge and turned the lobe beyond inside out (area
+// -3.7e-14), and the rebuilt face kept that lobe as a hole of the other, whose side its arcs then
+// decided: the sliver along x + y = 2/3 went to a source whose d^2 there is up to 0.0016 where the
+// truth is 2.2e-14. Such a lobe is now a piece of its own (DomainMesh::rebuild_faces). The oracle:
+// d^2 by brute force over the sources at points 5e-8 to 2e-7 inside that sliver (and on a grid).
+TEST(Degenerate, LobeTurnedInsideOutByAPinchIsAPieceOfItsOwn) {
+    const TriangleMesh T = make_mesh({{-6.105111318591985e-10, 8.652365437219276e-10, 9.662982850618321e-10},
+                                      {0.0023586929507447927, -0.0006887788587023062, 0.002106975691382966},
+                                      {0.0020473253558673347, 0.0008992060902611161, 0.0004883492116760469}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0.0002075783965849721, -0.0010586566326422815, 0.001079084319804613},
+                                      {0.0022549043629634387, -0.00015945140761770913, 0.001567432565182375},
+                                      {0.0021511151646709525, 0.0003698769087034316, 0.0010278904052800682},
+                                      {0.0008348491744615812, -0.0004775480708771656, 0.0009550654710521052},
+                                      {0.0011462167693390393, -0.0020655330198405875, 0.0025736919507590244},
+                                      {0.0015172911632544033, -0.0001778129958689748, 0.0011178482195113592},
+                                      {0.0018286587581318615, -0.0017657979448323967, 0.0027364746992182784},
+                                      {0.0025111007469246836, -0.001466062869824206, 0.0028992574476775323}},
+                                     {{0, 1, 2}, {3, 4, 5}, {4, 6, 5}, {5, 6, 7}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) {
+        EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0);
+        ASSERT_NEAR(ts.frame().corners[1].x, 1.0, 1e-15);  // the frame the points below are in
+        ASSERT_NEAR(ts.frame().corners[2].y, 0.5, 1e-15);
+        const Vec2 a{2.0 / 3, 0}, b{0.578072341476, 0.0885943251906};
+        int off = 0;
+        for (int k = 1; k <= 4; ++k)
+            for (int i = 1; i < 10; ++i) {
+                const Vec2 p = a + (b - a) * (i / 10.0) + Vec2{1, 1} * (k * 0.5e-7);
+                double poly, d2;
+                off += !polynomial_and_d2(ts, B, p, poly, d2) || std::abs(poly - d2) > 1e-9 * (1 + d2);
+            }
+        EXPECT_EQ(off, 0);
+    }, true);
+}
+
 // Generate_pairs5.py "sliver_strip" 7790 (target 2 of A against three of B's triangles, in every
 // order): a domain's sliver 0.5 long and 4e-8 wide, which the conic crosses between two vertices
 // 1e-8 apart, its curve as decomposed 3e-9 off both and passing outside the sliver between them:
