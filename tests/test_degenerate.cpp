@@ -2133,6 +2133,42 @@ TEST(Degenerate, LobeTurnedInsideOutByAPinchIsAPieceOfItsOwn) {
     }, true);
 }
 
+// Generate_pairs5.py "pow2_coords" 14611 (target 3 of A against three of B's triangles, in every
+// order): the difference of a face's and an edge's quadratic is a line pair whose centre lies
+// 3.5e-4 outside the face, its lines 7e-6 apart where they cross the face. One line enters the
+// face at a vertex and leaves it within 6.5e-7 of another, which the other line passes nearer
+// (8.6e-8): counted on that line only, it left the first with one crossing and no chord, and the
+// wedge between them (d^2 1.5e-14 to 8.6e-13) went with the rest of the face to the new source
+// (1.42e-11 there). A line of a pair that crosses the face an odd number of times now also ends
+// at the vertex of the curve nearest it, within kOffCurve (DomainMesh::add_chords_of_component).
+// The oracle: d^2 by brute force over the sources at points inside the wedge (and on a grid).
+TEST(Degenerate, LineOfAPairCrossingTheFaceOnceEndsAtAVertexTheOtherLinePassesNearer) {
+    const TriangleMesh T = make_mesh({{0, 0.001953125, 3.814697265625e-06}, {1.1641532182693481e-10, -1.9073486328125e-06, 6.103515625e-05}, {0, 0, -3.0517578125e-05}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-2.3283064365386963e-10, 1.8189894035458565e-12, 1.52587890625e-05},
+                                      {-0.015625, -0.5, -2.3283064365386963e-10},
+                                      {-7.4505805969238281e-09, 1.8189894035458565e-12, 2.3283064365386963e-10},
+                                      {0, 1.1641532182693481e-10, 2.384185791015625e-07},
+                                      {-1.8189894035458565e-12, -0.0078125, -9.3132257461547852e-10},
+                                      {-0.0078125, 3.0517578125e-05, 0},
+                                      {2.3283064365386963e-10, -3.637978807091713e-12, -3.0517578125e-05},
+                                      {-1.862645149230957e-09, -1.862645149230957e-09, 0.0001220703125},
+                                      {-0.03125, 0, 0}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) {
+        EXPECT_EQ(grid_points_off_d2(ts, B, 40, 1e-9), 0);
+        ASSERT_NEAR(ts.frame().corners[1].x, 1.0, 1e-15);  // the frame the points below are in
+        ASSERT_NEAR(ts.frame().corners[2].y, 0.04676065714, 1e-10);
+        const Vec2 a{0.998116, 0.031042}, b{0.998117, 0.0310406};
+        int off = 0;
+        for (int i = 0; i <= 10; ++i) {
+            double poly, d2;
+            off += !polynomial_and_d2(ts, B, a + (b - a) * (i / 10.0), poly, d2) || std::abs(poly - d2) > 1e-14 + 1e-9 * d2;
+        }
+        EXPECT_EQ(off, 0);
+    }, true);
+}
+
 // Generate_pairs5.py "sliver_strip" 7790 (target 2 of A against three of B's triangles, in every
 // order): a domain's sliver 0.5 long and 4e-8 wide, which the conic crosses between two vertices
 // 1e-8 apart, its curve as decomposed 3e-9 off both and passing outside the sliver between them:
