@@ -155,6 +155,28 @@ void bevel(SourceRegion& r, size_t i, size_t j, Vec2 X) {
     r.planes.push_back(h);
 }
 
+// Two sides of the face region taken as parallel to T' (halfspace: All or None) leave it unbounded
+// along them: the source is a sliver seen edge-on, its sides' planes within 1e-12 of T''s though
+// one may still cross T' within reach. Every point of a triangle projects onto its longest edge
+// within the edge (the angles at its ends are acute), so the face region lies between the planes
+// across that edge's ends: added, they end the region where the vertex regions begin. (Generate_
+// pairs7.py "zero_area_in_closed_far" 2321: a source 80 long and 3e-11 wide, perpendicular to T'
+// and straddling its plane; one long side's plane crosses T' 0.2 of T' from a corner, 4e-13 from
+// parallel to it, and the region ran on past the source's end, where the fast insertion, which
+// skips a vertex region that cannot be nearer, gave the plane's quadratic a domain of 0.02 of T'
+// nearest to that vertex: d^2 0.0017 where the truth is 0.0662.)
+void bound_sliver_face_region(const Projector& P, const std::array<Vec3, 3>& s, SourceRegion& face) {
+    int lost = 0;
+    for (const HalfPlane& h : face.planes) lost += h.kind != HalfPlane::Line;
+    if (lost < 2) return;
+    int i = 0;
+    for (int k = 1; k < 3; ++k)
+        if (norm2(s[(k + 1) % 3] - s[k]) > norm2(s[(i + 1) % 3] - s[i])) i = k;
+    const Vec3 &p = s[i], &q = s[(i + 1) % 3];
+    face.planes.push_back(P.halfspace(p, q - p));
+    face.planes.push_back(P.halfspace(q, p - q));
+}
+
 }  // namespace
 
 SourceProjection project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t index) {
@@ -224,6 +246,7 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     add(Region::ca, {P.halfspace(c, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a));
     add(Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(a, n));
     out.regions.resize(count);
+    bound_sliver_face_region(P, s, out.regions.back());
     // Every region's corners are the corners of the source carried along its normal n onto T''s
     // plane (each line through a corner contains that normal): taken so, in 3D, not where two
     // nearly parallel lines cross. A source seen nearly edge-on from T' has them far off: none.

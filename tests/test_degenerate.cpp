@@ -2579,6 +2579,41 @@ TEST(Degenerate, SliverFaceRegionEndsAtItsTip) {
     EXPECT_EQ(off, 0);
 }
 
+// A sliver source perpendicular to T' and straddling its plane (generate_pairs7.py
+// "zero_area_in_closed_far" 2321, by hand): its long sides' planes are within 1e-12 of T''s, taken
+// as parallel to it, and its face region ran on past its end at (1, 0, 2.5), where a source above
+// T' (d = 0.5) was nearer than the sliver's vertex (d > 0.8) but not than its plane (d <= 0.5):
+// inserted after it, the sliver's face region took that part with the plane's quadratic. The face
+// region now ends at the planes across its longest edge's ends (regions.cpp,
+// bound_sliver_face_region). The oracle: d^2 by brute force over both sources on a grid over T'.
+TEST(Degenerate, SliverSeenEdgeOnEndsItsFaceRegionAtItsLongestEdge) {
+    const TriangleMesh T = make_mesh({{0.5, 0, 0}, {1.5, 0, 0}, {1, 0, 5}}, {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{-1, 0.5, 3.3}, {3, 0.5, 3.3}, {1, 0.5, 9},  // above T', inserted first
+                                      {1, -2e-13, 2.5}, {1, -2e-13, -0.5}, {1, 8e-13, 0}},
+                                     {{0, 1, 2}, {3, 4, 5}});
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    const SourceProjection sliver = project_source(fr, S.corners(1), 1);
+    int lost = 0;  // the premise: two of the face region's sides taken as parallel to T'
+    for (const HalfPlane& h : sliver.regions.at(6).planes) lost += h.kind != HalfPlane::Line;
+    EXPECT_EQ(lost, 2);
+    DomainMesh mesh(fr.ccw_corners());
+    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+        mesh.insert(project_source(fr, S.corners(s), s));
+        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
+    }
+    const int n = 40;
+    int off = 0;
+    for (int i = 1; i < n; ++i)
+        for (int j = 1; i + j < n; ++j) {
+            const Vec2 p = fr.corners[0] + (fr.corners[1] - fr.corners[0]) * (double(i) / n) + (fr.corners[2] - fr.corners[0]) * (double(j) / n);
+            const int f = mesh.face_at(p);
+            ASSERT_GT(f, 0);
+            const double d = brute_distance(fr.to_world(p), S) / fr.scale;
+            off += std::fabs(mesh.faces()[f].poly(p) - d * d) > 1e-9 * (1 + d * d);
+        }
+    EXPECT_EQ(off, 0);
+}
+
 // Generate_pairs6.py "zero_area" 7181 (target 34 of B, nearest first): a target 1.6e-14 across at
 // the hub of a fan of A. Its sources' frame coordinates round by delta = 2.8e-3 of T', and a
 // domain's tip came out 1.3e-6 of T' outside its region (2e-20 in world units, far below the
