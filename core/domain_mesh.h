@@ -356,6 +356,7 @@ private:
     int outer_across(int hole, const std::vector<int>& cycles, const std::vector<int>& outers) const;  // a lens's piece
     void add_piece(int reuse, bool first, int loop, std::vector<int>& fids);  // rebuild_faces
     void add_lost_crossing(const CurveComponent& line, std::vector<std::pair<double, int>>& pts) const;
+    bool noise_chord_hugged(int f, const CurveComponent& comp, const Chord& c) const;
     int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose);
     bool loose_tangent(int h) const;
     int past_connector(int h) const;

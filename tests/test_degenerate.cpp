@@ -2169,6 +2169,41 @@ TEST(Degenerate, LineOfAPairCrossingTheFaceOnceEndsAtAVertexTheOtherLinePassesNe
     }, true);
 }
 
+// Generate_pairs7.py "aniso_grid" 5643 (target 16 of A against five of B's triangles, 1.3e10 from
+// the origin; nearest first): two nearly coplanar planes' hyperbola passes 1.7e-7 from two vertices
+// 1.2e-8 apart on the face's boundary, at parameters 1.2e-9 apart. One chord came in to one of them,
+// the next left from the other, 1.8e-7 long beside the boundary, and the two crossed: the face came
+// out one loop through both, and a band 3e-6 wide where the new source is nearer kept the old one
+// (d^2 up to 1.5 times the truth). A chord no longer than twice its ends' distance from its curve,
+// with a boundary path within kCluster of the segment between its ends, is now that path
+// (DomainMesh::noise_chord_hugged). The oracle: d^2 by brute force at points across the band (to 1%:
+// the world points' rounding at 1.3e10 is 1e-3 of d^2 there).
+TEST(Degenerate, ChordNoLongerThanItsEndsAreOffItsCurveIsTheBoundaryItHugs) {
+    const TriangleMesh T = make_mesh({{-12669157569.009398, -7349047197.8005943, 4586511801.4619455},
+                                      {-12669156967.035656, -7349047197.8005943, 4586511801.9197111},
+                                      {-12669157569.009398, -7349047197.7987747, 4586511801.3707237}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-12669157689.404144, -7349047197.8005943, 4586511801.4032955},
+                                      {-12669157328.2199, -7349047197.8005943, 4586511801.6506233},
+                                      {-12669157328.2199, -7349047197.7987747, 4586511801.6418753},
+                                      {-12669157689.404144, -7349047197.7987747, 4586511801.2864361},
+                                      {-12669157328.2199, -7349047197.7969551, 4586511801.6343994},
+                                      {-12669157689.404144, -7349047197.7969551, 4586511801.1865654},
+                                      {-12669156967.035656, -7349047197.7987747, 4586511802.0285873},
+                                      {-12669156967.035656, -7349047197.7969551, 4586511802.1216364}},
+                                     {{0, 1, 2}, {3, 2, 4}, {3, 4, 5}, {2, 6, 7}, {2, 7, 4}});
+    expect_constructions_hold(T, B, [&](const TargetSolver& ts) {
+        ASSERT_NEAR(ts.frame().corners[2].x, 1.0, 1e-15);  // the frame the points below are in
+        ASSERT_NEAR(ts.frame().corners[0].y, 1.5156787e-4, 1e-10);
+        int off = 0;
+        for (int i = 0; i <= 12; ++i) {
+            double poly, d2;
+            off += !polynomial_and_d2(ts, B, Vec2{0.59, 8.3e-5 + i * 0.05e-5}, poly, d2) || std::abs(poly - d2) > 0.01 * d2;
+        }
+        EXPECT_EQ(off, 0);
+    }, true);
+}
+
 // Generate_pairs5.py "sliver_strip" 7790 (target 2 of A against three of B's triangles, in every
 // order): a domain's sliver 0.5 long and 4e-8 wide, which the conic crosses between two vertices
 // 1e-8 apart, its curve as decomposed 3e-9 off both and passing outside the sliver between them:
