@@ -92,27 +92,33 @@ void expect_constructions_hold(const TriangleMesh& A, const TriangleMesh& B, Pro
 
 // The domain polynomial at p (frame) and d^2 there by brute force over B (frame units); false
 // if p is in no domain.
-bool polynomial_and_d2(const TargetSolver& ts, const TriangleMesh& B, Vec2 p, double& poly, double& d2) {
-    const int f = ts.domain_mesh()->face_at(p);
+bool polynomial_and_d2(const DomainMesh& mesh, const TargetFrame& fr, const TriangleMesh& B, Vec2 p, double& poly, double& d2) {
+    const int f = mesh.face_at(p);
     if (f <= 0) return false;
-    const double d = brute_distance(ts.frame().to_world(p), B) / ts.frame().scale;
-    poly = ts.domain_mesh()->faces()[f].poly(p);
+    const double d = brute_distance(fr.to_world(p), B) / fr.scale;
+    poly = mesh.faces()[f].poly(p);
     d2 = d * d;
     return true;
+}
+bool polynomial_and_d2(const TargetSolver& ts, const TriangleMesh& B, Vec2 p, double& poly, double& d2) {
+    return polynomial_and_d2(*ts.domain_mesh(), ts.frame(), B, p, poly, d2);
 }
 
 // How many points of an n x n barycentric grid strictly inside T' have a domain polynomial off
 // d^2 (brute force over B) by more than tol (1 + d^2); a point in no domain counts too.
-int grid_points_off_d2(const TargetSolver& ts, const TriangleMesh& B, int n, double tol) {
-    const auto& c = ts.frame().corners;
+int grid_points_off_d2(const DomainMesh& mesh, const TargetFrame& fr, const TriangleMesh& B, int n, double tol) {
+    const auto& c = fr.corners;
     int off = 0;
     for (int i = 1; i < n; ++i)
         for (int j = 1; i + j < n; ++j) {
             const Vec2 p = c[0] + (c[1] - c[0]) * (double(i) / n) + (c[2] - c[0]) * (double(j) / n);
             double poly, d2;
-            off += !polynomial_and_d2(ts, B, p, poly, d2) || std::abs(poly - d2) > tol * (1 + d2);
+            off += !polynomial_and_d2(mesh, fr, B, p, poly, d2) || std::abs(poly - d2) > tol * (1 + d2);
         }
     return off;
+}
+int grid_points_off_d2(const TargetSolver& ts, const TriangleMesh& B, int n, double tol) {
+    return grid_points_off_d2(*ts.domain_mesh(), ts.frame(), B, n, tol);
 }
 
 // How many of the points a + (b - a) i / n (frame), i = from .. to, have a domain polynomial off d^2
@@ -2635,17 +2641,7 @@ TEST(Degenerate, SliverSeenEdgeOnEndsItsFaceRegionAtItsLongestEdge) {
         mesh.insert(project_source(fr, S.corners(s), s));
         EXPECT_EQ(mesh.validate(), "") << "after source " << s;
     }
-    const int n = 40;
-    int off = 0;
-    for (int i = 1; i < n; ++i)
-        for (int j = 1; i + j < n; ++j) {
-            const Vec2 p = fr.corners[0] + (fr.corners[1] - fr.corners[0]) * (double(i) / n) + (fr.corners[2] - fr.corners[0]) * (double(j) / n);
-            const int f = mesh.face_at(p);
-            ASSERT_GT(f, 0);
-            const double d = brute_distance(fr.to_world(p), S) / fr.scale;
-            off += std::fabs(mesh.faces()[f].poly(p) - d * d) > 1e-9 * (1 + d * d);
-        }
-    EXPECT_EQ(off, 0);
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 40, 1e-9), 0);
 }
 
 // Generate_pairs6.py "zero_area" 7181 (target 34 of B, nearest first): a target 1.6e-14 across at
