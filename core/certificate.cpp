@@ -103,8 +103,9 @@ double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const 
 // sliver pieces' values with their slack (tab.piece_upper, fast mode only: the interval was looser
 // than paper mode's) are not needed here; a cancelled run, which has no confirmation, uses them.
 // Targets left open (not closed within the subdivision's budget) are bounded by what their
-// subdivision had when it stopped (confirm_top.cpp, pending_bound), not by their domain meshes'
-// maximum, which is no bound (generate_pairs4.py "cap_sliver" 9260).
+// subdivision had when it stopped (confirm_top.cpp, pending_bound), or by their longest edge's
+// bound plus their height where lower (edge_bound), not by their domain meshes' maximum, which is
+// no bound (generate_pairs4.py "cap_sliver" 9260).
 double upper_end(const TopConfirmation& top, double distance) {
     double upper = std::max(distance, top.upper);
     if (top.open_upper >= 0) upper = std::max(upper, top.open_upper);

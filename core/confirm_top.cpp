@@ -26,8 +26,8 @@
 // Without the cuts, a seam where d is flat or has a crease needed splitting down to `tol` along
 // its whole length; with them, a target stays open (its node budget spent) only on rare ridges
 // between triangles that are not neighbours (none of 114,391 targets in 8,000 degenerate pairs
-// was left open). An open target's domain mesh value (with the rounding allowance the
-// certificate adds) stands for it.
+// was left open). An open target is bounded by what its subdivision had (pending_bound) or, where
+// lower, by its longest edge's bound plus its height (edge_bound: a needle among tied triangles).
 // Distances are taken relative to a corner of the target (an input point): their rounding scales
 // with the target's size and the distances, not with the coordinates' magnitude. Far from the
 // origin, where the rounding of a world point reaches the tolerance, which triangle is nearest is
@@ -379,6 +379,66 @@ double pending_bound(const MeshGrid& g, const Target& tg, const std::vector<Sub>
     return upper;
 }
 
+// An upper bound of d over a thin target from its longest edge, for a target its subdivision left
+// open (generate_pairs7.py "prism_axis_needle" 14492: a needle on a prism's axis, where the caps'
+// triangles tie; every piece across the tie stayed above the goal, and the pieces left had bounds
+// 1e-3 of the needle's length above the truth). Every point of a triangle lies within its height h
+// (over its longest edge) of that edge, since the angles at the edge's ends are at most 90 degrees: so
+// d <= max over the edge + h (d is 1-Lipschitz). Along a segment d(., T) is convex for every
+// triangle T of B: its maximum is at an end. A segment is bounded so by the triangles nearest its
+// middle and its ends, or by d at its middle plus half its length, and split in half until that
+// is within tol of L, or it is shorter than 2 tol; at most `budget` segments, what is left bounded
+// by its parent. HUGE_VAL where B has no triangle.
+double edge_bound(const MeshGrid& g, const Target& tg, double L, double tol, size_t budget, size_t& nodes) {
+    const std::array<Vec2, 3> uv{Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}};
+    int k = 0;  // the longest edge: uv[k] to uv[k + 1]
+    for (int i = 1; i < 3; ++i)
+        if (norm(tg.at(uv[(i + 1) % 3]) - tg.at(uv[i])) > norm(tg.at(uv[(k + 1) % 3]) - tg.at(uv[k]))) k = i;
+    const Vec3 a = tg.at(uv[k]), e = tg.at(uv[(k + 1) % 3]) - a;
+    const double le = norm(e), h = (le > 0 ? norm(cross(tg.e1, tg.e2)) / le * (1 + 1e-12) : 0.0) + 0x1p-46 * tg.size;
+    struct Seg {
+        double s0, s1;
+        uint32_t hint;
+        double bound;
+    };
+    auto worse = [](const Seg& x, const Seg& y) { return x.bound < y.bound; };
+    std::vector<Seg> heap{{0.0, 1.0, UINT32_MAX, HUGE_VAL}};
+    double upper = -HUGE_VAL;
+    for (size_t used = 0; !heap.empty() && used < budget; ++used, ++nodes) {
+        std::pop_heap(heap.begin(), heap.end(), worse);
+        const Seg s = heap.back();
+        heap.pop_back();
+        const Vec3 p0 = a + s.s0 * e, p1 = a + s.s1 * e, m = a + (0.5 * (s.s0 + s.s1)) * e;
+        const double half = 0.5 * norm(p1 - p0) * (1 + 1e-12);
+        uint32_t near = s.hint;
+        const double dm = measure(g, tg, m, near);
+        if (!(dm < HUGE_VAL)) return HUGE_VAL;
+        double slack = 0x1p-46 * tg.size, u = dm + half;
+        slack = std::max(slack, rounding(tg.size, dm, relative(g.mesh(), near, tg.o)));
+        uint32_t ends[2] = {near, near};
+        measure(g, tg, p0, ends[0]);
+        measure(g, tg, p1, ends[1]);
+        for (const uint32_t c : {near, s.hint, ends[0], ends[1]}) {
+            if (c == UINT32_MAX) continue;
+            const Tri3 T = relative(g.mesh(), c, tg.o);
+            const double b = std::max(dist_rel(p0, T), dist_rel(p1, T));
+            if (b < u) u = b, slack = std::max(slack, rounding(tg.size, b, T));
+        }
+        u += slack;
+        if (u <= L + tol || !(half > tol)) {
+            upper = std::max(upper, u);
+            continue;
+        }
+        const double mid = 0.5 * (s.s0 + s.s1);
+        for (const Seg& child : {Seg{s.s0, mid, near, u}, Seg{mid, s.s1, near, u}}) {
+            heap.push_back(child);
+            std::push_heap(heap.begin(), heap.end(), worse);
+        }
+    }
+    for (const Seg& s : heap) upper = std::max(upper, s.bound);  // (the first segment's HUGE_VAL when no budget)
+    return upper + h;
+}
+
 }  // namespace
 
 bool can_reach(const std::array<Vec3, 3>& corners, double bound, double slack, double L) {
@@ -474,8 +534,12 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
         if (stack.empty()) {
             ++out.closed;
             out.upper = std::max(out.upper, target_upper);
-        } else {  // not closed within its budget: the bounds it has are its upper end
-            out.open_upper = std::max(out.open_upper, pending_bound(g, tg, stack, target_upper));
+        } else {  // not closed within its budget: the bounds it has are its upper end, or, for a
+                  // thin target, its longest edge's and its height
+            double open = pending_bound(g, tg, stack, target_upper);
+            if (out.edge_nodes < kBudget && open > L + tol)
+                open = std::min(open, edge_bound(g, tg, L, tol, std::min(kPerTarget, kBudget - out.edge_nodes), out.edge_nodes));
+            out.open_upper = std::max(out.open_upper, open);
         }
     }
     out.upper = std::max(out.upper, L);
@@ -488,6 +552,12 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
         out.upper = std::max(out.upper, out.value);
     }
     return out;
+}
+
+double longest_edge_bound(const MeshGrid& g, const std::array<Vec3, 3>& target, double L, double tol, double coord) {
+    const Target tg{target[0], target[1] - target[0], target[2] - target[0], longest_edge(target), rounding_matters(coord, tol)};
+    size_t nodes = 0;
+    return edge_bound(g, tg, L, tol, kPerTarget, nodes);
 }
 
 bool polish_witness(const VoxelGrid& grid, int side, uint32_t target, const Vec3& point, double value, double tol,

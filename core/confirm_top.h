@@ -19,6 +19,7 @@ struct TopConfirmation {
     Vec3 origin, offset;       // and the point origin + offset (origin: a corner of the target)
     double value = 0;          // its distance to the other mesh, as computed here
     size_t targets = 0, closed = 0, nodes = 0;  // targets looked at, closed, and sub-triangles
+    size_t edge_nodes = 0;     // segments of the open targets' longest edges (edge_bound)
 };
 
 // Whether a target (its corners, its value or bound in the table, its slack) can reach `L` within
@@ -32,6 +33,10 @@ bool can_reach(const std::array<Vec3, 3>& corners, double bound, double slack, d
 // `coord`: the coordinates' magnitude (coordinate_magnitude), which says where a world point's
 // rounding matters at `tol`.
 TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& tab, double best, double tol, double coord);
+
+// An upper bound of d(., g's mesh) over `target` (world corners): its longest edge's, by segments
+// down to `tol` from `L`, plus its height over that edge (confirm_top bounds an open target so).
+double longest_edge_bound(const MeshGrid& g, const std::array<Vec3, 3>& target, double L, double tol, double coord);
 
 // A local search from the witness `point` (on target `target`, whose distance is `value`) for a
 // farther point nearby (`tol`, `coord`: confirm_top's): a domain mesh's maximum at a corner of domains may

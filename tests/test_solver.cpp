@@ -670,3 +670,24 @@ TEST(SolverFarApart, ATargetFarAwayLooksOnlyNearItsSearchRadius) {
         EXPECT_LE(std::sqrt(ts.max_sq()), corners + size);
     }
 }
+
+// An open target's bound from its longest edge (confirm_top.cpp, edge_bound) adds the target's
+// height: a needle standing on its edge 1 above a plane, its apex 1e-8 higher, is bounded by the
+// apex's distance 1 + 1e-8 (by hand: the height above the plane), not by its edge's 1, and by
+// no more than the apex's distance plus twice the tolerance; at the origin and 1e6 from it.
+TEST(ConfirmTop, LongestEdgeBoundAddsTheHeight) {
+    for (double far : {0.0, 1e6}) {
+        SCOPED_TRACE("offset " + std::to_string(far));
+        const Vec3 off = Vec3{3, -2, 1} * far;
+        const double h = 1e-8;
+        const TriangleMesh B = make_mesh({off + Vec3{-4, -4, 0}, off + Vec3{4, -4, 0}, off + Vec3{4, 4, 0}, off + Vec3{-4, 4, 0}},
+                                         {{0, 1, 2}, {0, 2, 3}});
+        const std::array<Vec3, 3> needle{off + Vec3{0, 0, 1}, off + Vec3{1, 0, 1}, off + Vec3{0.5, 0, 1 + h}};
+        const MeshGrid g(B);
+        const double tol = 1e-10 * 8, truth = 1 + h;
+        const double coord = std::max({std::fabs(off.x), std::fabs(off.y), std::fabs(off.z), 4.0});
+        const double bound = longest_edge_bound(g, needle, 1.0, tol, coord);
+        EXPECT_GE(bound, truth);
+        EXPECT_LE(bound, truth + 2 * tol + 1e-15 * coord);
+    }
+}
