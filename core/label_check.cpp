@@ -56,8 +56,8 @@ static double feature_distance2(const Vec3& p, const Vec3& a, const Vec3& b, con
     return HUGE_VAL;
 }
 
-// The squared distance (frame units) from p to the face of the source s (both in world
-// coordinates) where p's foot on its plane lies inside it, else +inf; in long double, from the
+// The squared distance (frame units) from the frame's point q to the face of the source s (world
+// coordinates) where q's foot on its plane lies inside it, else +inf; in long double, from the
 // signs of the triple products n.(e x (p - corner)) of its three edges. On a sliver the frame's
 // rounded corners cannot say: generate_pairs.py "sliver" 33474, a source 34317 long and 1.7e-4
 // tall (4.7e-9 of T') standing on T' at 90 degrees less 3e-9 rad. Rounding the corners to the
@@ -65,20 +65,38 @@ static double feature_distance2(const Vec3& p, const Vec3& a, const Vec3& b, con
 // away by some 6e-9 across it: closest_point_inside put the foot outside where its exact
 // barycentric coordinates (rationals from the input doubles) are (0.13, 0.71, 0.15), and the face,
 // as near as the edges ca and ab to 1e-16, was not counted as a tie with them. In long double
-// from world coordinates the products there are good to some 1e-3 of their size.
-static double face_distance2_world(const Vec3& p, const std::array<Vec3, 3>& s, double scale) {
+// from world coordinates the products there are good to some 1e-3 of their size. All relative to
+// the frame's origin, and q not rounded to a world point: on a target a few ulps of its
+// coordinates across (generate_pairs8.py "mixed_scale_sim" 1746, 2.4e-7 at 3.5e8), that rounding
+// is a quarter of T'.
+static double face_distance2_world(const TargetFrame& fr, Vec2 q, const std::array<Vec3, 3>& s) {
     using LD = long double;
     struct V { LD x, y, z; };
-    auto sub = [](const Vec3& u, const Vec3& v) { return V{(LD)u.x - v.x, (LD)u.y - v.y, (LD)u.z - v.z}; };
+    const LD qx = (LD)q.x * fr.scale, qy = (LD)q.y * fr.scale;
+    const V p{qx * fr.e1.x + qy * fr.e2.x, qx * fr.e1.y + qy * fr.e2.y, qx * fr.e1.z + qy * fr.e2.z};
+    auto rel = [&](const Vec3& u) { return V{(LD)u.x - fr.origin.x, (LD)u.y - fr.origin.y, (LD)u.z - fr.origin.z}; };
+    auto sub = [](const V& u, const V& v) { return V{u.x - v.x, u.y - v.y, u.z - v.z}; };
     auto cross = [](const V& u, const V& v) { return V{u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x}; };
     auto dot = [](const V& u, const V& v) { return u.x * v.x + u.y * v.y + u.z * v.z; };
-    const V n = cross(sub(s[1], s[0]), sub(s[2], s[0]));
+    const std::array<V, 3> c{rel(s[0]), rel(s[1]), rel(s[2])};
+    const V n = cross(sub(c[1], c[0]), sub(c[2], c[0]));
     const LD nn = dot(n, n);
     if (!(nn > 0)) return HUGE_VAL;
-    for (int k = 0; k < 3; ++k)
-        if (dot(n, cross(sub(s[(k + 1) % 3], s[k]), sub(p, s[k]))) < 0) return HUGE_VAL;
-    const LD h = dot(n, sub(p, s[0]));
-    return (double)(h * h / nn) / (scale * scale);
+    // The height over the plane from the point of the edges' lines nearest p (on the plane to
+    // its rounding), not from a corner: n is off by its rounding over the source's area, 1e-7 on
+    // a sliver 1e-12 thin, and from a corner 1.2e4 away that put a point 1e-12 from the face
+    // 2e-6 off it (generate_pairs8.py "mixed_scale_sim" 702).
+    V from{};
+    LD nearest = HUGE_VALL;
+    for (int k = 0; k < 3; ++k) {
+        const V e = sub(c[(k + 1) % 3], c[k]), w = sub(p, c[k]);
+        if (dot(n, cross(e, w)) < 0) return HUGE_VAL;
+        const LD ee = dot(e, e), t = ee > 0 ? dot(w, e) / ee : 0;
+        const V r{w.x - t * e.x, w.y - t * e.y, w.z - t * e.z};  // p less its foot on the line
+        if (const LD rr = dot(r, r); rr < nearest) nearest = rr, from = r;
+    }
+    const LD h = dot(n, from);
+    return (double)(h * h / nn) / ((LD)fr.scale * fr.scale);
 }
 
 const Quadratic2* region_quadratic(const SourceProjection& p, Region r) {
@@ -207,6 +225,13 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
     std::vector<std::vector<int>> members(classes.size());  // each class's features, by its name
     for (size_t f = 0; f < classes.size(); ++f)
         if (classes[f] >= 0) members[classes[f]].push_back((int)f);
+    // The least and largest of a class's quadratics at p.
+    auto spread = [&](const std::vector<int>& features, Vec2 p) {
+        std::pair<double, double> r{HUGE_VAL, -HUGE_VAL};
+        for (int f : features)
+            if (const Quadratic2* qf = region_quadratic(proj[f / 8], (Region)(f % 8))) r.first = std::min(r.first, (*qf)(p)), r.second = std::max(r.second, (*qf)(p));
+        return r;
+    };
     for (int y = 0; y < L.height; ++y)
         for (int x = 0; x < L.width; ++x) {
             const int i = y * L.width + x;
@@ -224,7 +249,7 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
                 const Vec2 p = L.sample_point(x, y);
                 const Vec3 p3(p.x, p.y, 0);
                 double near = feature_distance2(p3, src[s][0], src[s][1], src[s][2], r);  // or the nearest of its tie class
-                if (r == Region::abc && near == HUGE_VAL) near = face_distance2_world(fr.to_world(p), world[s], fr.scale);
+                if (r == Region::abc && near == HUGE_VAL) near = face_distance2_world(fr, p, world[s]);
                 if (const int c = classes[L.domain[i]]; c >= 0)
                     for (int f : members[c])
                         if (f != L.domain[i])
@@ -243,10 +268,19 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
                 // diagonals parallel lines 7e-12 apart, tied; a rail between them, 1.2e-9 relative
                 // nearer than the diagonal whose region held p, 2.7e-15 farther than the other.)
                 if (const int c = classes[L.domain[i]]; !tie && c >= 0) {
-                    double lo = HUGE_VAL, hi = -HUGE_VAL;
-                    for (int f : members[c])
-                        if (const Quadratic2* qf = region_quadratic(proj[f / 8], (Region)(f % 8))) lo = std::min(lo, (*qf)(p)), hi = std::max(hi, (*qf)(p));
+                    const auto [lo, hi] = spread(members[c], p);
                     tie = hi > lo && near - best_d2[i] <= hi - lo;
+                }
+                // Or, the other way round, within the spread of the nearest feature's class: the
+                // rule made the class one polynomial, which the domain mesh holds by one member's
+                // quadratic, and a feature nearer than that quadratic takes the domain from it.
+                // (Generate_pairs5.py "point_like" 56486: a target 5e-15 across on an edge of an
+                // octahedron 61 from the origin, where delta is 0.028 of T'; a face and its edge
+                // tied, the edge's quadratic kept, 0.0116 at a sample where the face's d^2 is
+                // 0.0013, and the neighbouring face, 0.0099 there, took the domain from it.)
+                if (const int c = classes[projection_feature(proj, t, L.nearest[i], p)]; !tie && c >= 0 && members[c].size() > 1) {
+                    const auto [lo, hi] = spread(members[c], p);
+                    tie = hi > lo && near <= hi;
                 }
                 const Quadratic2* q = proj[s].degenerate ? region_quadratic(proj[s], r) : nullptr;
                 tie = tie || (q && std::fabs((*q)(p) - best_d2[i]) <= 1e-9 * best_d2[i] + 64 * delta);

@@ -15,7 +15,10 @@
 // counted as a tie, not a disagreement. So is a sample where the labelled feature itself is as
 // near as the nearest one to 1e-9 relative (a difference the quadratics may not resolve: a source
 // standing 5e-7 rad off the vertical on an edge in T''s plane has its face 2.6e-13 relative nearer
-// than that edge). Any other difference is a disagreement.
+// than that edge), or where the labelled feature's distance lies within the spread of the
+// quadratics of either feature's tie class at the sample (the rule made each class one
+// polynomial; the domain mesh holds it by one member's quadratic, which another feature may beat
+// or lose to within that spread). Any other difference is a disagreement.
 #pragma once
 #include <array>
 #include <cstdint>

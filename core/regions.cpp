@@ -107,8 +107,9 @@ struct Projector {
         q.f = norm2(perp_r);
         return q;
     }
-    Quadratic2 plane(const Vec3& p0, const Vec3& n) const {
-        double h = dot(n, rel(p0));
+    // Squared distance to the plane through the point origin + r0 (unscaled) with normal n.
+    Quadratic2 plane(const Vec3& r0, const Vec3& n) const {
+        double h = dot(n, r0) / F.scale;
         double n1 = dot(F.e1, n), n2 = dot(F.e2, n);
         Quadratic2 q;
         q.a = n1 * n1; q.b = n1 * n2; q.c = n2 * n2;
@@ -244,7 +245,18 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     add(Region::ab, {P.halfspace(a, mab), P.halfspace(a, b - a), P.halfspace(b, a - b)}, P.edge(a, b));
     add(Region::bc, {P.halfspace(b, mbc), P.halfspace(b, c - b), P.halfspace(c, b - c)}, P.edge(b, c));
     add(Region::ca, {P.halfspace(c, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a));
-    add(Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(a, n));
+    // The plane's height over T' is off by the normal's rounding times the distance of the point
+    // it is taken through. Through a corner that rounding grows as the source thins, to 1e-7 on a
+    // sliver 1e-12 thin (the cross product's rounding over its area, even in long double), and a
+    // corner 1e12 frame units away (a target 1e-12 of the source's size) put the plane 1e5 off
+    // (generate_pairs8.py "mixed_scale_sim" 702: d^2 2696 where it is 2.5e-5). Through the source's
+    // point nearest T''s origin that distance is the target's, but the point is off the plane by
+    // its own rounding, an ulp of the corners' distances: worth it only on a source thinner than
+    // 1 in 2048, where the normal's rounding outgrows that (an ordinary face keeps its corner).
+    Vec3 through = a - F.origin;
+    if (longest2 > 2048.0 * std::sqrt((double)area2))
+        through = closest_point_on_triangle(Vec3{0, 0, 0}, a - F.origin, b - F.origin, c - F.origin).point;
+    add(Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(through, n));
     out.regions.resize(count);
     bound_sliver_face_region(P, s, out.regions.back());
     // Every region's corners are the corners of the source carried along its normal n onto T''s

@@ -337,6 +337,37 @@ TEST(LabelCheck, DistanceWithinATieClassesSpreadIsATie) {
     }
 }
 
+// A target 5e-15 across (a point-like triangle) on an edge of an octahedron 61 from the origin
+// (generate_pairs5.py "point_like" 56486, side B, target 2): the sources' frame coordinates are
+// known to delta = 0.028 of T', and d^2 over T' is at most 0.02, so the tie rule makes the face
+// of source 3 one polynomial with its edge ab, which the domain keeps: 0.0116 at a sample where
+// the face's d^2 is 0.0013. The neighbouring face (source 7, 0.0099 there, tied with neither)
+// beat that quadratic and took the domain; the overlay counted 280 of 8,545 samples as
+// disagreements, none of which the domain mesh could resolve (validate() passes: its polynomial is
+// within the tie's slack of d^2 by brute force). A label within the spread of the nearest
+// feature's class is now a tie, as one within its own class's spread was.
+TEST(LabelCheck, DistanceWithinTheNearestClassesSpreadIsATie) {
+    const TriangleMesh A = make_mesh({{-1.00440343625859, -61.230100251637054, 6.257462806512688},
+                                      {-1.015367032742387, -61.243807751853694, 6.274724769134307},
+                                      {-1.0069684472493674, -61.2285602386044, 6.27461170619389},
+                                      {-1.0128020217516096, -61.24534776488635, 6.257575869453105},
+                                      {-0.9992569664822953, -61.24279255385062, 6.268207805124167},
+                                      {-1.0205135025186816, -61.23111544964013, 6.263979770522829}},
+                                     {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});
+    const TriangleMesh B = make_mesh({{-1.00685254091391, -61.234546566520905, 6.257495776704389},
+                                      {-1.0068525409139073, -61.2345465665209, 6.257495776704389},
+                                      {-1.0068525409139124, -61.234546566520905, 6.257495776704392}},
+                                     {{0, 1, 2}});
+    const VoxelGrid grid(B, A);
+    TargetSolver ts(grid, 0, 0);
+    while (ts.step()) EXPECT_EQ(ts.validate(true), "") << ts.insertions() << " insertions";
+    ASSERT_NE(ts.domain_mesh(), nullptr);
+    const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
+    ASSERT_GT(L.samples, 5000);
+    EXPECT_EQ(L.disagree, 0) << L.first;
+    EXPECT_GT(L.ties, 200);
+}
+
 // A sliver source 34317 long and 1.7e-4 tall standing on T' at 90 degrees less 3e-9 rad, its long
 // edge T''s edge (generate_pairs.py "sliver" 33474). Its face, its edge ca and its edge ab are as
 // near over most of T' to 1e-16 relative, and the domain's label is the face: at the sample
@@ -1528,6 +1559,120 @@ TEST(Degenerate, SliverWitnessIsTakenOntoTheSliver) {
     const TriangleMesh B =
         make_mesh({{X - 64, X - 64, Z}, {X + 1088, X - 64, Z}, {X + 1088, X + 64, Z}, {X - 64, X + 64, Z}}, {{0, 1, 2}, {0, 2, 3}});
     expect_narrow_interval_holding(A, B, d, d);
+}
+
+// A sliver 5e4 long and 3e-8 wide (generate_pairs8.py "mixed_scale_sim" 702: a similarity of a
+// 1e6 square with 1e-6 triangles on it and a sliver along its diagonal) against a target 4e-8
+// across on its diagonal. The sliver's normal, rounded over its area, is off by some 1e-7, and its
+// plane's quadratic was taken through its first corner, 1.2e4 (3e11 frame units) from the target:
+// 2696 at a point whose foot lies inside the sliver 1e-12 from it (d^2 1.1e-24, exact rational
+// arithmetic from the input doubles, 5e-10 in frame units), and validate() saw d^2 jump by 0.5
+// across an arc. The plane is now taken through the sliver's point nearest the target.
+// Oracle: d^2 in long double on a grid over the target, each point's height over a source's plane
+// taken from its foot on the nearest edge's line (brute_distance in double, and distance_ld, which
+// takes a source this thin as its edges, are off by up to 0.05 of T' in d^2 here).
+long double sliver_d2_ld(const L3& p, const L3& a, const L3& b, const L3& c) {
+    long double best = std::min({segment_d2(p, a, b), segment_d2(p, b, c), segment_d2(p, c, a)});
+    const L3 n = crossl(b - a, c - a);
+    const long double nn = dotl(n, n);
+    if (!(nn > 0) || !projects_inside((p - a) - n * (dotl(p - a, n) / nn), a, b, c, n)) return best;
+    L3 from = p - a;
+    long double nearest = HUGE_VALL;
+    for (const auto& [u, v] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+        const L3 e = v - u, w = p - u, r = w - e * (dotl(w, e) / dotl(e, e));  // p less its foot on the line
+        if (dotl(r, r) < nearest) nearest = dotl(r, r), from = r;
+    }
+    const long double h = dotl(from, n);
+    return std::min(best, h * h / nn);
+}
+
+TEST(Degenerate, SliverPlaneIsTakenThroughItsPointNearestTheTarget) {
+    const TriangleMesh target = make_mesh({{-3659.7953959393876, 6688.814004763557, -9620.8646633590561},
+                                           {-3659.7953959234778, 6688.8140047837396, -9620.8646633824046},
+                                           {-3659.7953959699362, 6688.8140047701318, -9620.8646633741919}},
+                                          {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0, 0, 0},
+                                      {15910.327942029378, 20181.163449643533, -23348.342181082178},
+                                      {-14639.181583740045, 26755.256018944317, -38483.458653519301},
+                                      {-30549.509525769423, 6574.0925693007875, -15135.116472437128},
+                                      {15910.327942033755, 20181.163449616055, -23348.342181102948},
+                                      {15910.327942049664, 20181.163449636235, -23348.342181126292},
+                                      {8455.8486541903076, 16898.346553000025, -20575.743952811205},
+                                      {8455.8486542062183, 16898.346553020208, -20575.743952834553},
+                                      {8455.8486541859311, 16898.346553027506, -20575.743952790435},
+                                      {15910.327942025, 20181.163449671007, -23348.342181061409},
+                                      {15910.327942040909, 20181.16344969119, -23348.342181084754},
+                                      {15910.327942020625, 20181.163449698488, -23348.34218104064},
+                                      {-4.3762893552703873e-09, 2.7478444728879513e-08, 2.0768874374166526e-08},
+                                      {-14639.181583744423, 26755.256018971795, -38483.458653498536},
+                                      {-7319.5907919049487, 13377.628009506212, -19241.729326754019}},
+                                     {{0, 1, 2}, {0, 2, 3}, {4, 5, 1}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}});
+    const TargetFrame fr = TargetFrame::make(target.corners(0));
+    const SourceProjection sliver = project_source(fr, B.corners(5), 5);
+    EXPECT_LT((*region_quadratic(sliver, Region::abc))({0.509765625, 0.474609375}), 1e-6);
+    expect_constructions_hold(target, B, [&](const TargetSolver& ts) {
+        const TargetFrame& f = ts.frame();
+        const auto& c = f.corners;
+        int off = 0;
+        for (int i = 1; i < 24; ++i)
+            for (int j = 1; i + j < 24; ++j) {
+                const Vec2 p = c[0] + (i / 24.0) * (c[1] - c[0]) + (j / 24.0) * (c[2] - c[0]);
+                const int face = ts.domain_mesh()->face_at(p);
+                const L3 w = ld(f.origin) + ld(f.e1) * ((long double)p.x * f.scale) + ld(f.e2) * ((long double)p.y * f.scale);
+                long double d2 = HUGE_VALL;
+                for (size_t t = 0; t < B.num_triangles(); ++t) {
+                    const auto s = B.corners(t);
+                    d2 = std::min(d2, sliver_d2_ld(w, ld(s[0]), ld(s[1]), ld(s[2])));
+                }
+                d2 /= (long double)f.scale * f.scale;
+                off += face <= 0 || std::fabs(ts.domain_mesh()->faces()[face].poly(p) - d2) > 1e-3L * (1 + d2);
+            }
+        EXPECT_EQ(off, 0);
+        const LabelCheck L = check_labels(*ts.domain_mesh(), f, inserted_corners(ts), ts.inserted_sources());
+        EXPECT_EQ(L.disagree, 0) << L.first;
+    });
+}
+
+// A target 2.4e-7 across, a few ulps of its coordinates (3.5e8), lying in the plane of a sliver
+// whose apex is 1.6e-7 off its long edge (generate_pairs8.py "mixed_scale_sim" 1746: a similarity
+// of a square 1e6 across with 1e-6 triangles, scaled to 2e5 far from the origin). At the sample
+// (0.5918, 0.4551) the domain is labelled with the sliver's face, and its foot does lie inside
+// the face (exact rational arithmetic from the input doubles; the long double oracle below).
+// The overlay took the face's distance at the sample rounded to a world point, 6e-8 (a quarter of
+// T') off, found its foot outside, and counted 2,111 of 19,296 samples as disagreements. It now
+// takes the point in long double relative to the frame's origin.
+TEST(LabelCheck, FaceDistanceIsTakenAtTheSampleNotItsWorldRounding) {
+    const TriangleMesh target = make_mesh({{-349950233.2768445, 238102947.73944452, -220916870.61301118},
+                                           {-349950233.27684438, 238102947.73944452, -220916870.613011},
+                                           {-349950233.27684426, 238102947.73944452, -220916870.61301115}},
+                                          {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-349843609.42759413, 238102947.73944473, -221023494.46226156},
+                                      {-350056857.12609488, 238102947.73944473, -221023494.46226156},
+                                      {-350056857.12609488, 238102947.73944473, -220810246.76376083},
+                                      {-349843609.42759413, 238102947.73944473, -220810246.76376083},
+                                      {-349843609.42759413, 238102947.73944452, -221023494.46226156},
+                                      {-350056857.12609488, 238102947.73944452, -220810246.76376083},
+                                      {-349950233.2768445, 238102947.73944452, -220916870.61301097}},
+                                     {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}});
+    const VoxelGrid grid(target, B);
+    TargetSolver ts(grid, 0, 0);
+    ts.on_event([](const Event&) {});
+    ts.run();
+    ASSERT_NE(ts.domain_mesh(), nullptr);
+    const TargetFrame& f = ts.frame();
+    const Vec2 p{0.591796875, 0.455078125};
+    const int face = ts.domain_mesh()->face_at(p);
+    ASSERT_GT(face, 0);
+    EXPECT_EQ(ts.domain_mesh()->faces()[face].label.source, 2u);
+    EXPECT_EQ(ts.domain_mesh()->faces()[face].label.region, Region::abc);
+    // The oracle: the sample in long double, the sliver's face (its foot inside) nearer than its edges.
+    const L3 w = ld(f.origin) + ld(f.e1) * ((long double)p.x * f.scale) + ld(f.e2) * ((long double)p.y * f.scale);
+    const auto s = B.corners(2);
+    const L3 a = ld(s[0]), b = ld(s[1]), c = ld(s[2]);
+    EXPECT_LT(sliver_d2_ld(w, a, b, c), std::min({segment_d2(w, a, b), segment_d2(w, b, c), segment_d2(w, c, a)}));
+    const LabelCheck L = check_labels(*ts.domain_mesh(), f, inserted_corners(ts), ts.inserted_sources());
+    ASSERT_GT(L.samples, 10000);
+    EXPECT_EQ(L.disagree, 0) << L.first;
 }
 
 // Generate_pairs7.py "prism_axis_needle" 14492: a needle (1.5 long, 1e-8 high: handled as its
