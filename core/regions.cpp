@@ -107,9 +107,10 @@ struct Projector {
         q.f = norm2(perp_r);
         return q;
     }
-    // Squared distance to the plane through the point origin + r0 (unscaled) with normal n.
-    Quadratic2 plane(const Vec3& r0, const Vec3& n) const {
-        double h = dot(n, r0) / F.scale;
+    // Squared distance to the plane through the point r (frame-scaled, relative to the origin)
+    // with normal n.
+    Quadratic2 plane(const Vec3& r, const Vec3& n) const {
+        double h = dot(n, r);
         double n1 = dot(F.e1, n), n2 = dot(F.e2, n);
         Quadratic2 q;
         q.a = n1 * n1; q.b = n1 * n2; q.c = n2 * n2;
@@ -253,9 +254,9 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     // point nearest T''s origin that distance is the target's, but the point is off the plane by
     // its own rounding, an ulp of the corners' distances: worth it only on a source thinner than
     // 1 in 2048, where the normal's rounding outgrows that (an ordinary face keeps its corner).
-    Vec3 through = a - F.origin;
+    Vec3 through = P.rel(a);
     if (longest2 > 2048.0 * std::sqrt((double)area2))
-        through = closest_point_on_triangle(Vec3{0, 0, 0}, a - F.origin, b - F.origin, c - F.origin).point;
+        through = closest_point_on_triangle(Vec3{0, 0, 0}, a - F.origin, b - F.origin, c - F.origin).point / F.scale;
     add(Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(through, n));
     out.regions.resize(count);
     bound_sliver_face_region(P, s, out.regions.back());
