@@ -243,9 +243,19 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     add(Region::a, {P.halfspace(a, a - b), P.halfspace(a, a - c)}, P.vertex(a));
     add(Region::b, {P.halfspace(b, b - a), P.halfspace(b, b - c)}, P.vertex(b));
     add(Region::c, {P.halfspace(c, c - a), P.halfspace(c, c - b)}, P.vertex(c));
-    add(Region::ab, {P.halfspace(a, mab), P.halfspace(a, b - a), P.halfspace(b, a - b)}, P.edge(a, b));
-    add(Region::bc, {P.halfspace(b, mbc), P.halfspace(b, c - b), P.halfspace(c, b - c)}, P.edge(b, c));
-    add(Region::ca, {P.halfspace(c, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a));
+    // A plane along an edge (across the source's plane) taken through the edge's other end where
+    // its own is more than 1024 times as far from T''s origin: the line it leaves on T' is off by
+    // the rounding of that end's frame coordinates over the plane's tilt from T'. A sliver fan's
+    // apex at a target 1e-9 across, its far ends 5e10 frame units away, a side plane within 7e-6 of
+    // T''s: through the far end the face region's line was 0.3 of T' off (generate_pairs9.py
+    // "sliver_fan_tiny" 2287: a face region holding points whose foot is outside the source).
+    auto along = [&](const Vec3& own, const Vec3& other) -> const Vec3& {
+        return norm(P.rel(own)) > 1024 * std::max(1.0, norm(P.rel(other))) ? other : own;
+    };
+    const Vec3 &pab = along(a, b), &pbc = along(b, c), &pca = along(c, a);
+    add(Region::ab, {P.halfspace(pab, mab), P.halfspace(a, b - a), P.halfspace(b, a - b)}, P.edge(a, b));
+    add(Region::bc, {P.halfspace(pbc, mbc), P.halfspace(b, c - b), P.halfspace(c, b - c)}, P.edge(b, c));
+    add(Region::ca, {P.halfspace(pca, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a));
     // The plane's height over T' is off by the normal's rounding times the distance of the point
     // it is taken through. Through a corner that rounding grows as the source thins, to 1e-7 on a
     // sliver 1e-12 thin (the cross product's rounding over its area, even in long double), and a
@@ -257,7 +267,7 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     Vec3 through = P.rel(a);
     if (longest2 > 2048.0 * std::sqrt((double)area2))
         through = closest_point_on_triangle(Vec3{0, 0, 0}, a - F.origin, b - F.origin, c - F.origin).point / F.scale;
-    add(Region::abc, {P.halfspace(a, -mab), P.halfspace(b, -mbc), P.halfspace(c, -mca)}, P.plane(through, n));
+    add(Region::abc, {P.halfspace(pab, -mab), P.halfspace(pbc, -mbc), P.halfspace(pca, -mca)}, P.plane(through, n));
     out.regions.resize(count);
     bound_sliver_face_region(P, s, out.regions.back());
     // Every region's corners are the corners of the source carried along its normal n onto T''s
