@@ -386,9 +386,9 @@ double pending_bound(const MeshGrid& g, const Target& tg, const std::vector<Sub>
 // (over its longest edge) of that edge, since the angles at the edge's ends are at most 90 degrees: so
 // d <= max over the edge + h (d is 1-Lipschitz). Along a segment d(., T) is convex for every
 // triangle T of B: its maximum is at an end. A segment is bounded so by the triangles nearest its
-// middle and its ends, or by d at its middle plus half its length, and split in half until that
-// is within tol of L, or it is shorter than 2 tol; at most `budget` segments, what is left bounded
-// by its parent. HUGE_VAL where B has no triangle.
+// middle and its ends (each end measured once, as its parent's middle), or by d at its middle plus
+// half its length, and split in half until that is within tol of L, or it is shorter than 2 tol;
+// at most `budget` segments, what is left bounded by its parent. HUGE_VAL where B has no triangle.
 double edge_bound(const MeshGrid& g, const Target& tg, double L, double tol, size_t budget, size_t& nodes) {
     const std::array<Vec2, 3> uv{Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}};
     int k = 0;  // the longest edge: uv[k] to uv[k + 1]
@@ -398,11 +398,15 @@ double edge_bound(const MeshGrid& g, const Target& tg, double L, double tol, siz
     const double le = norm(e), h = (le > 0 ? norm(cross(tg.e1, tg.e2)) / le * (1 + 1e-12) : 0.0) + 0x1p-46 * tg.size;
     struct Seg {
         double s0, s1;
-        uint32_t hint;
+        uint32_t near0, near1;  // the triangles nearest its ends, as measured there (a parent's middle)
         double bound;
     };
     auto worse = [](const Seg& x, const Seg& y) { return x.bound < y.bound; };
-    std::vector<Seg> heap{{0.0, 1.0, UINT32_MAX, HUGE_VAL}};
+    uint32_t ends[2] = {UINT32_MAX, UINT32_MAX};
+    if (!(measure(g, tg, a, ends[0]) < HUGE_VAL)) return HUGE_VAL;  // (B has a triangle: so has every measure below)
+    ends[1] = ends[0];
+    measure(g, tg, a + e, ends[1]);
+    std::vector<Seg> heap{{0.0, 1.0, ends[0], ends[1], HUGE_VAL}};
     double upper = -HUGE_VAL;
     for (size_t used = 0; !heap.empty() && used < budget; ++used, ++nodes) {
         std::pop_heap(heap.begin(), heap.end(), worse);
@@ -410,16 +414,11 @@ double edge_bound(const MeshGrid& g, const Target& tg, double L, double tol, siz
         heap.pop_back();
         const Vec3 p0 = a + s.s0 * e, p1 = a + s.s1 * e, m = a + (0.5 * (s.s0 + s.s1)) * e;
         const double half = 0.5 * norm(p1 - p0) * (1 + 1e-12);
-        uint32_t near = s.hint;
+        uint32_t near = s.near0;
         const double dm = measure(g, tg, m, near);
-        if (!(dm < HUGE_VAL)) return HUGE_VAL;
         double slack = 0x1p-46 * tg.size, u = dm + half;
         slack = std::max(slack, rounding(tg.size, dm, relative(g.mesh(), near, tg.o)));
-        uint32_t ends[2] = {near, near};
-        measure(g, tg, p0, ends[0]);
-        measure(g, tg, p1, ends[1]);
-        for (const uint32_t c : {near, s.hint, ends[0], ends[1]}) {
-            if (c == UINT32_MAX) continue;
+        for (const uint32_t c : {near, s.near0, s.near1}) {
             const Tri3 T = relative(g.mesh(), c, tg.o);
             const double b = std::max(dist_rel(p0, T), dist_rel(p1, T));
             if (b < u) u = b, slack = std::max(slack, rounding(tg.size, b, T));
@@ -430,7 +429,7 @@ double edge_bound(const MeshGrid& g, const Target& tg, double L, double tol, siz
             continue;
         }
         const double mid = 0.5 * (s.s0 + s.s1);
-        for (const Seg& child : {Seg{s.s0, mid, near, u}, Seg{mid, s.s1, near, u}}) {
+        for (const Seg& child : {Seg{s.s0, mid, s.near0, near, u}, Seg{mid, s.s1, near, s.near1, u}}) {
             heap.push_back(child);
             std::push_heap(heap.begin(), heap.end(), worse);
         }
