@@ -1328,7 +1328,8 @@ void DomainMesh::pinch_face(int va, int vb, int ha, int hb) {
 // and a band 3e-6 wide where the new source is nearer kept the old one: d^2 up to 1.5 times the
 // truth.)
 bool DomainMesh::noise_chord_hugged(int f, const CurveComponent& comp, const Chord& c) const {
-    if (comp.closed() || c.va < 0) return false;
+    assert(c.va >= 0 && c.vb >= 0);  // a chord between two vertices (add_chords_of_component)
+    if (comp.closed()) return false;
     const Vec2 pa = vertices_[c.va].p, pb = vertices_[c.vb].p;
     const double len = norm(pb - pa), off = std::max(off_component(comp, pa), off_component(comp, pb));
     Chord straight;

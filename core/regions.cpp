@@ -249,10 +249,11 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     // apex at a target 1e-9 across, its far ends 5e10 frame units away, a side plane within 7e-6 of
     // T''s: through the far end the face region's line was 0.3 of T' off (generate_pairs9.py
     // "sliver_fan_tiny" 2287: a face region holding points whose foot is outside the source).
-    auto along = [&](const Vec3& own, const Vec3& other) -> const Vec3& {
-        return norm(P.rel(own)) > 1024 * std::max(1.0, norm(P.rel(other))) ? other : own;
+    const double ra = norm(P.rel(a)), rb = norm(P.rel(b)), rc = norm(P.rel(c));
+    auto along = [](const Vec3& own, double r_own, const Vec3& other, double r_other) -> const Vec3& {
+        return r_own > 1024 * std::max(1.0, r_other) ? other : own;
     };
-    const Vec3 &pab = along(a, b), &pbc = along(b, c), &pca = along(c, a);
+    const Vec3 &pab = along(a, ra, b, rb), &pbc = along(b, rb, c, rc), &pca = along(c, rc, a, ra);
     add(Region::ab, {P.halfspace(pab, mab), P.halfspace(a, b - a), P.halfspace(b, a - b)}, P.edge(a, b));
     add(Region::bc, {P.halfspace(pbc, mbc), P.halfspace(b, c - b), P.halfspace(c, b - c)}, P.edge(b, c));
     add(Region::ca, {P.halfspace(pca, mca), P.halfspace(c, a - c), P.halfspace(a, c - a)}, P.edge(c, a));
