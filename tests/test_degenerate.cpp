@@ -90,14 +90,19 @@ void expect_constructions_hold(const TriangleMesh& A, const TriangleMesh& B, Pro
     }
 }
 
+// d^2 at p (frame) by brute force over B, in frame units.
+double brute_d2(const TargetFrame& fr, const TriangleMesh& B, Vec2 p) {
+    const double d = brute_distance(fr.to_world(p), B) / fr.scale;
+    return d * d;
+}
+
 // The domain polynomial at p (frame) and d^2 there by brute force over B (frame units); false
 // if p is in no domain.
 bool polynomial_and_d2(const DomainMesh& mesh, const TargetFrame& fr, const TriangleMesh& B, Vec2 p, double& poly, double& d2) {
     const int f = mesh.face_at(p);
     if (f <= 0) return false;
-    const double d = brute_distance(fr.to_world(p), B) / fr.scale;
     poly = mesh.faces()[f].poly(p);
-    d2 = d * d;
+    d2 = brute_d2(fr, B, p);
     return true;
 }
 bool polynomial_and_d2(const TargetSolver& ts, const TriangleMesh& B, Vec2 p, double& poly, double& d2) {
@@ -105,17 +110,25 @@ bool polynomial_and_d2(const TargetSolver& ts, const TriangleMesh& B, Vec2 p, do
 }
 
 // How many points of an n x n barycentric grid strictly inside T' have a domain polynomial off
-// d^2 (brute force over B) by more than tol (1 + d^2); a point in no domain counts too.
-int grid_points_off_d2(const DomainMesh& mesh, const TargetFrame& fr, const TriangleMesh& B, int n, double tol) {
+// d2_at(p), an oracle's d^2 (frame units, in its own precision), by more than tol (1 + d^2); a
+// point in no domain counts too.
+template <class D2>
+int grid_points_off(const DomainMesh& mesh, const TargetFrame& fr, int n, double tol, D2 d2_at) {
     const auto& c = fr.corners;
     int off = 0;
     for (int i = 1; i < n; ++i)
         for (int j = 1; i + j < n; ++j) {
             const Vec2 p = c[0] + (c[1] - c[0]) * (double(i) / n) + (c[2] - c[0]) * (double(j) / n);
-            double poly, d2;
-            off += !polynomial_and_d2(mesh, fr, B, p, poly, d2) || std::abs(poly - d2) > tol * (1 + d2);
+            const int f = mesh.face_at(p);
+            if (f <= 0) { ++off; continue; }
+            const auto d2 = d2_at(p);
+            off += std::abs(mesh.faces()[f].poly(p) - d2) > tol * (1 + d2);
         }
     return off;
+}
+// The same against brute force over B.
+int grid_points_off_d2(const DomainMesh& mesh, const TargetFrame& fr, const TriangleMesh& B, int n, double tol) {
+    return grid_points_off(mesh, fr, n, tol, [&](Vec2 p) { return brute_d2(fr, B, p); });
 }
 int grid_points_off_d2(const TargetSolver& ts, const TriangleMesh& B, int n, double tol) {
     return grid_points_off_d2(*ts.domain_mesh(), ts.frame(), B, n, tol);
@@ -1586,27 +1599,19 @@ long double sliver_d2_ld(const L3& p, const L3& a, const L3& b, const L3& c) {
     return std::min(best, h * h / nn);
 }
 
-// How many points of an n x n barycentric grid strictly inside T' have a domain polynomial off
-// d^2 by more than tol (1 + d^2), d^2 by sliver_d2_ld over B at the grid point taken in long
-// double from the frame (no world point's rounding); a point in no domain counts too.
-int grid_points_off_d2_ld(const TargetSolver& ts, const TriangleMesh& B, int n, long double tol) {
+// grid_points_off against sliver_d2_ld over B, at the grid point taken in long double from the
+// frame (no world point's rounding).
+int grid_points_off_d2_ld(const TargetSolver& ts, const TriangleMesh& B, int n, double tol) {
     const TargetFrame& f = ts.frame();
-    const auto& c = f.corners;
-    int off = 0;
-    for (int i = 1; i < n; ++i)
-        for (int j = 1; i + j < n; ++j) {
-            const Vec2 p = c[0] + (double(i) / n) * (c[1] - c[0]) + (double(j) / n) * (c[2] - c[0]);
-            const int face = ts.domain_mesh()->face_at(p);
-            const L3 w = ld(f.origin) + ld(f.e1) * ((long double)p.x * f.scale) + ld(f.e2) * ((long double)p.y * f.scale);
-            long double d2 = HUGE_VALL;
-            for (size_t t = 0; t < B.num_triangles(); ++t) {
-                const auto s = B.corners(t);
-                d2 = std::min(d2, sliver_d2_ld(w, ld(s[0]), ld(s[1]), ld(s[2])));
-            }
-            d2 /= (long double)f.scale * f.scale;
-            off += face <= 0 || std::fabs(ts.domain_mesh()->faces()[face].poly(p) - d2) > tol * (1 + d2);
+    return grid_points_off(*ts.domain_mesh(), f, n, tol, [&](Vec2 p) {
+        const L3 w = ld(f.origin) + ld(f.e1) * ((long double)p.x * f.scale) + ld(f.e2) * ((long double)p.y * f.scale);
+        long double d2 = HUGE_VALL;
+        for (size_t t = 0; t < B.num_triangles(); ++t) {
+            const auto s = B.corners(t);
+            d2 = std::min(d2, sliver_d2_ld(w, ld(s[0]), ld(s[1]), ld(s[2])));
         }
-    return off;
+        return d2 / ((long double)f.scale * f.scale);
+    });
 }
 
 TEST(Degenerate, SliverPlaneIsTakenThroughItsPointNearestTheTarget) {
@@ -1634,7 +1639,7 @@ TEST(Degenerate, SliverPlaneIsTakenThroughItsPointNearestTheTarget) {
     const SourceProjection sliver = project_source(fr, B.corners(5), 5);
     EXPECT_LT((*region_quadratic(sliver, Region::abc))({0.509765625, 0.474609375}), 1e-6);
     expect_constructions_hold(target, B, [&](const TargetSolver& ts) {
-        EXPECT_EQ(grid_points_off_d2_ld(ts, B, 24, 1e-3L), 0);
+        EXPECT_EQ(grid_points_off_d2_ld(ts, B, 24, 1e-3), 0);
         const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
         EXPECT_EQ(L.disagree, 0) << L.first;
     });
@@ -1663,7 +1668,7 @@ TEST(Degenerate, SidePlaneOfASliverIsTakenThroughItsEndNearTheTarget) {
                                         {-65.317856032017247, -14.825734585704129, -5.7792951619097801}},
                                        {{0, 1, 2}, {0, 2, 3}});
     expect_constructions_hold(target, fan, [&](const TargetSolver& ts) {
-        EXPECT_EQ(grid_points_off_d2_ld(ts, fan, 24, 1e-5L), 0);
+        EXPECT_EQ(grid_points_off_d2_ld(ts, fan, 24, 1e-5), 0);
         const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
         EXPECT_EQ(L.disagree, 0) << L.first;
     });
