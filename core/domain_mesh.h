@@ -291,6 +291,8 @@ private:
     static void hyperbola_as_line_pair(const Quadratic2& g, ConicDecomposition& dec);
     void add_line_pair_centre(SplitCall& s);
     void add_chords_of_component(SplitCall& s, const CurveComponent& comp);
+    bool leaves_into_face(int f, int v, Vec2 dir) const;
+    void order_coincident_crossings(int f, const CurveComponent& comp, std::vector<std::pair<double, int>>& pts) const;
     bool on_component(const SplitCall& s, const CurveComponent& comp, int v, double t) const;
     bool flat_boundary_edge(const SplitCall& s, int u, int v) const;
     bool foot_in_face(int f, Vec2 q) const;

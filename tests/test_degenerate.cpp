@@ -1674,6 +1674,40 @@ TEST(Degenerate, SidePlaneOfASliverIsTakenThroughItsEndNearTheTarget) {
     });
 }
 
+// Segments (zero-area triangles) crossing at one point of a target 3e-4 across, and a sliver
+// lying in T''s plane through it (generate_pairs9.py "zeroarea_cross_tiny" 1266, side A, target
+// 1). Two segments standing across T' at that point, 1e-11 apart, and a third lying along T' 1e-11
+// off it leave a lens 9e-6 long there between two domains' arcs. The sliver's edge line crosses
+// the lens, both crossings at one point; taken in the order of their parameters (rounding), the
+// chords on either side left the face across the lens, became bridges of one loop, and the face
+// stayed whole across the line: a wedge where the segment in T''s plane is nearer kept the sliver,
+// d^2 0.0465 where the truth is 0.0417 (frame units). Oracle: d^2 in long double on a grid over
+// T' after every insertion, in three orders; and the overlay's nearest-feature map.
+TEST(Degenerate, ChordsLeaveCoincidentCrossingsIntoTheFace) {
+    const TriangleMesh target = make_mesh({{-2.4594415271025743e-05, 6.4953677125102136e-05, 4.6922855175292589e-05},
+                                           {-9.3945670332446936e-05, -1.1373884950349302e-05, -0.0002216327906112796},
+                                           {-0.00025081006315349661, 0.00018604756847860396, -8.3155499383793282e-05}},
+                                          {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-0.00017315333619608399, 7.5185740915814276e-06, -7.1627478578829856e-05},
+                                      {0.00014187252193982144, 0.00039142412319875851, -0.00026209084835570207},
+                                      {-0.00024999945195530152, -8.6129770965258433e-05, -2.516662534393232e-05},
+                                      {-0.00011911816439045368, 7.3368413938536218e-05, -0.00010429692663996914},
+                                      {-0.00014926821681058154, 3.6626120786950325e-05, -8.6068325924882694e-05},
+                                      {-0.00014517841654946881, 0.00027391129472662836, 0.00026866055989450884},
+                                      {-0.00011815399698919159, 4.0263582863419243e-05, -0.00015759075685726841},
+                                      {7.4106519704263048e-05, -0.00013552677876151316, -0.00019392247280951093},
+                                      {-0.00014017875355309446, 8.9815292220831889e-05, -9.4141242298344453e-05},
+                                      {-3.303611692529906e-05, -2.2855743270442654e-05, -0.00014403185755559436},
+                                      {-0.00023931293079047442, 0.00013622220482741618, -0.00016456926215398671},
+                                      {-8.6607200088500462e-05, 5.0693029584641537e-05, -8.4390438854322453e-05}},
+                                     {{0, 1, 1}, {2, 3, 4}, {5, 6, 6}, {7, 8, 9}, {10, 11, 11}});
+    expect_constructions_hold(target, B, [&](const TargetSolver& ts) {
+        EXPECT_EQ(grid_points_off_d2_ld(ts, B, 24, 1e-4), 0);
+        const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
+        EXPECT_EQ(L.disagree, 0) << L.first;
+    }, true);
+}
+
 // A target 2.4e-7 across, a few ulps of its coordinates (3.5e8), lying in the plane of a sliver
 // whose apex is 1.6e-7 off its long edge (generate_pairs8.py "mixed_scale_sim" 1746: a similarity
 // of a square 1e6 across with 1e-6 triangles, scaled to 2e5 far from the origin). At the sample
