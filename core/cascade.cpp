@@ -309,9 +309,14 @@ private:
         // centroid), and splitting down to kMaxDepth made 4^10 pieces, each solved
         // (generate_pairs7.py "points_on_circle" 1269: 50 point triangles round a target 5e-10
         // across took minutes; a triangle 1e-9 across under one point, 1,048,577 solves and 2 s).
+        // But where L is within the tie margin of 0 (near-coincident meshes far from the origin:
+        // the margin's absolute part, 1e-11 of the coordinates, is above L), no bound can drop a
+        // piece, and splitting only multiplies the solves: 4^10 pieces of each of eight targets
+        // 1.2e-7 across, 1.6e-10 from a plane 2e7 from the origin, took hours (generate_pairs9.py
+        // "cluster_vertex" 260). The piece is solved as it is.
         const double ratio = p.centre_sq >= threshold() ? kSplitRatio : kFineRatio;
         const double source2 = std::max(longest_edge2(B_.corners(p.cand[0])), 1e-6 * p.centre_sq);
-        if (p.depth < kMaxDepth && longest_edge2(p.c) > ratio * ratio * source2) {
+        if (p.depth < kMaxDepth && threshold() > 0 && longest_edge2(p.c) > ratio * ratio * source2) {
             // Points 0-2 are the corners, 3-5 the edge midpoints; each gets its nearest triangle.
             const Vec3 pt[6] = {p.c[0], p.c[1], p.c[2], 0.5 * (p.c[0] + p.c[1]), 0.5 * (p.c[1] + p.c[2]),
                                 0.5 * (p.c[2] + p.c[0])};

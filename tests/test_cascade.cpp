@@ -131,6 +131,28 @@ TEST(Cascade, TinyTargetUnderAPointIsNotSplitToTheLimit) {
     EXPECT_NEAR(r.b_to_a.distance, 1.0, 1e-15);
 }
 
+// Where L is within the tie margin of 0 no piece can be dropped, and splitting only multiplies the
+// solves: a target 1.2e-7 across, 1e-10 above a point 1.7e7 from the origin (the margin's absolute
+// part is 1e-11 of the coordinates, 1.7e-4 here, above every distance), split to the limit as
+// the point is small against its distance, took 4^10 constructions; eight such targets by a
+// cluster of points took hours (generate_pairs9.py "cluster_vertex" 260). The oracle: d over the
+// target is largest at a corner (the distance to a point is convex), sqrt(s^2 + h^2), and the
+// point's distance to the target is h (its foot is the corner above it).
+TEST(Cascade, NothingIsSplitWhereNothingCanBeDropped) {
+    const double x0 = 16777216, s = 0x1p-23, h = 1e-10;
+    const TriangleMesh A = mesh_of({{x0, 0, h}, {x0 + s, 0, h}, {x0, s, h}}, {{0, 1, 2}});
+    const TriangleMesh B = mesh_of({{x0, 0, 0}, {x0, 0, 0}, {x0, 0, 0}}, {{0, 1, 2}});
+    const HausdorffResult r = hausdorff(A, B);
+    EXPECT_LT(r.a_to_b.exact_solves, 64u);
+    const double d = std::sqrt(s * s + h * h);
+    EXPECT_NEAR(r.a_to_b.distance, d, 1e-15 * d);
+    EXPECT_LE(r.a_to_b.lower, d);
+    EXPECT_GE(r.a_to_b.upper, d);
+    EXPECT_NEAR(r.b_to_a.distance, h, 1e-6 * h);
+    EXPECT_LE(r.b_to_a.lower, h);
+    EXPECT_GE(r.b_to_a.upper, h);
+}
+
 TEST(Cascade, DegenerateConfigurations) {
     auto bump = [](double x, double y) { return 0.15 * std::sin(x) * std::cos(y - 0.3); };
     TriangleMesh flat = height_field(4, [](double, double) { return 0.0; });
