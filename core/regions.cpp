@@ -154,6 +154,7 @@ void bevel(SourceRegion& r, size_t i, size_t j, Vec2 X) {
     HalfPlane h;
     h.n = s / ls;
     h.offset = dot(h.n, X);
+    h.bevel = true;
     r.planes.push_back(h);
 }
 

@@ -56,6 +56,7 @@ struct HalfPlane {
     Vec2 n;
     double offset = 0;
     enum Kind : uint8_t { Line, All, None } kind = Line;
+    bool bevel = false;  // a corner's bevel (regions.cpp): no boundary of the region in exact arithmetic
     Quadratic2 as_quadratic() const { return half_plane(n, offset); }
 };
 
@@ -79,6 +80,17 @@ inline double region_margin(const SourceRegion& r, Vec2 p) {
 }
 // Whether p lies in region r to within `tol` (frame units).
 inline bool in_region(const SourceRegion& r, Vec2 p, double tol) { return region_margin(r, p) >= -tol; }
+// The same by the region's lines alone, its bevels left out: where two lines meet at an angle
+// theta, the construction places the corner only to its tolerance over theta, and a bevel's margin
+// there is the distance along the wedge (TargetSolver::validate()).
+inline bool within_region_lines(const SourceRegion& r, Vec2 p, double tol) {
+    double m = HUGE_VAL;
+    for (const HalfPlane& h : r.planes) {
+        if (h.kind == HalfPlane::None) return false;
+        if (h.kind == HalfPlane::Line && !h.bevel) m = std::min(m, dot(h.n, p) - h.offset);
+    }
+    return m >= -tol;
+}
 
 // The regions of one source triangle, in the order they are inserted (vertex, edge, then face
 // regions, so the face region is what remains). A degenerate source (a segment or a point) has

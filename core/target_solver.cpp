@@ -675,10 +675,15 @@ std::string TargetSolver::validate(bool thorough) const {
             // or the region's line from where it is computed: where the sources' frame coordinates
             // round by more than that (delta, as the mesh's continuity check has it), delta
             // (generate_pairs6.py "zero_area" 7181: a target 1.6e-14 across, delta 2.8e-3, a
-            // domain's tip 1.3e-6 of T' outside its region, 2e-20 in world units).
+            // domain's tip 1.3e-6 of T' outside its region, 2e-20 in world units). By the region's
+            // lines, not its bevels: two lines meeting at theta place their corner only to that
+            // tolerance over theta, and a bevel measures along the wedge (generate_pairs9.py
+            // "tiny_fins" 2316: a fin's face region a wedge 2.5e-7 wide, its tip where the edge
+            // region's lines, 0.003 rad apart, cross 1.4e-5 further on; a point there 3.4e-8 outside
+            // the face region's line was 6.9e-6 beyond its bevel, and d^2 right to 4e-9).
             const double reach = std::max(DomainMesh::kVertexTolerance, delta);
             bool inside = false;
-            for (const SourceRegion* r : tied) inside = inside || in_region(*r, p, (rim ? 4 : 2) * reach);
+            for (const SourceRegion* r : tied) inside = inside || within_region_lines(*r, p, (rim ? 4 : 2) * reach);
             if (thorough && !inside && !sliver)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
                                      L.source, region_name(L.region), p.x, p.y), buf;

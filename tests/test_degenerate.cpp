@@ -1708,6 +1708,55 @@ TEST(Degenerate, ChordsLeaveCoincidentCrossingsIntoTheFace) {
     }, true);
 }
 
+// A fin 2.5e-7 of T' across standing 1e-3 rad off perpendicular to T' among other tiny fins
+// (generate_pairs9.py "tiny_fins" 2316, side A, target 0). Its face region on T' is a wedge from
+// its foot to the corner where its top is carried along its normal onto T', 5.9e-4 away; there the
+// edge region ca's lines, 0.003 rad apart, cross 1.4e-5 further on (the tolerance over the angle),
+// and the face's domain runs on to that crossing in a sliver 5e-8 wide. A point of it was 3.4e-8
+// outside the face region's line but 6.9e-6 beyond its bevel, and validate() failed it though d^2
+// holds to 4e-9 there. validate() now holds points to the region's lines, not its bevels. The
+// oracles: d^2 in long double on a grid over T' and the overlay's nearest-feature map, after
+// every insertion in three orders.
+TEST(Degenerate, RegionCheckHoldsATipToItsLinesNotItsBevel) {
+    const TriangleMesh target = make_mesh({{-5078.3405750056982, -4900.8371513487355, -1212.7468487591689},
+                                           {2587.0907110939943, 5699.5201491244452, 9608.0962860007803},
+                                           {-7226.3715405856328, -7530.1614960978577, 7683.7492136174187}},
+                                          {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-6152.3560577986636, -6215.499323727714, 3235.5011824153962},
+                                      {-6152.3560577926683, -6215.4993237188792, 3235.5011824428539},
+                                      {-6152.3560578559336, -6215.4993236766622, 3235.5011824314201},
+                                      {-5078.3405751312503, -4900.8371515217523, -1212.7468489151711},
+                                      {-5078.3405748801461, -4900.8371511757186, -1212.7468486031667},
+                                      {-5078.3405750739239, -4900.8371514460168, -1212.7468488458185},
+                                      {440.28932559741395, 2743.7823422356701, 7033.0958038678054},
+                                      {440.28674547292587, 2743.7788639295727, 7033.095297924554},
+                                      {440.29242232494829, 2743.779199400873, 7033.0958019721547},
+                                      {-3558.3972045992814, -2618.7695120357685, 7232.9566126961872},
+                                      {-3558.3971039151265, -2618.769372801853, 7232.9567548261475},
+                                      {-3558.3975507111018, -2618.7692139933474, 7232.9566316124447},
+                                      {-3558.397468935389, -2618.7691009075029, 7232.956747050458},
+                                      {4767.0447391657508, 8714.1309040320521, 12685.410489906964},
+                                      {4767.0447390286699, 8714.1309038646541, 12685.410490488655},
+                                      {4767.0447385404741, 8714.1309042468874, 12685.410490437933},
+                                      {4767.044738531019, 8714.1309042353423, 12685.410490478054},
+                                      {-5840.8022829560705, -5834.1380034409704, 1945.139465109525},
+                                      {-5840.8022839526166, -5834.1380048066603, 1945.1394641367904},
+                                      {-5840.8022818961217, -5834.1380052967334, 1945.1394646508279},
+                                      {-4849.3598131998433, -4498.7334304307105, 2098.4850809229511},
+                                      {-4849.3580916405726, -4498.7313231344133, 2098.4779507439553},
+                                      {-4849.3576117375769, -4498.7345361306816, 2098.4839985342437},
+                                      {-7226.3715415485294, -7530.1614972765028, 7683.7492176054438},
+                                      {-7226.3715396227362, -7530.1614949192126, 7683.7492096293936},
+                                      {-7226.3715334798198, -7530.1615008782837, 7683.7492126860243}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {10, 12, 11}, {13, 14, 15}, {14, 16, 15},
+                                      {17, 18, 19}, {20, 21, 22}, {23, 24, 25}});
+    expect_constructions_hold(target, B, [&](const TargetSolver& ts) {
+        EXPECT_EQ(grid_points_off_d2_ld(ts, B, 24, 1e-6), 0);
+        const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
+        EXPECT_EQ(L.disagree, 0) << L.first;
+    }, true);
+}
+
 // A target 2.4e-7 across, a few ulps of its coordinates (3.5e8), lying in the plane of a sliver
 // whose apex is 1.6e-7 off its long edge (generate_pairs8.py "mixed_scale_sim" 1746: a similarity
 // of a square 1e6 across with 1e-6 triangles, scaled to 2e5 far from the origin). At the sample
