@@ -329,6 +329,8 @@ private:
         faces_[F].tie_slack = std::max(faces_[F].tie_slack, unit_box_bound(faces_[F].poly - q));
     }
     void claim_cracks(const SourceProjection& src, unsigned may_win);
+    void claim_crack(int P, const SourceProjection& src, unsigned may_win);
+    void claim_sliver(int P, const SourceProjection& src, unsigned may_win);
     size_t leftover_region(int P, const SourceProjection& src, unsigned may_win, size_t last);
     bool long_arc_point(int f, Vec2& out) const;
     // A point of face f stepped `step` times min(1, len) to the inside from the middle of
