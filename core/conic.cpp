@@ -536,6 +536,22 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
         out.type = ConicType::Empty;
         decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
     }
+    // So is a line pair whose k, zeroed within its rounding there, moves the roots near T' by more
+    // than 1e-9 and more than the parabolic form's dropped term, l2 (Y - Yr)^2 <= 4 |l2|, does: k
+    // and l2 Y0^2 nearly cancel at T' (both are about b2^2 / l2), and with k dropped the lines were
+    // 8 times as far apart as the curve's branches. Generate_pairs9.py "tinydiff_coinc_far" 2315,
+    // side A, target 2: an edge's quadratic less a nearly parallel plane's (l2 = -1.6e-14, centre
+    // 70 away, k = 7.5e-11), branches 1.05e-6 either side of the edge's line taken as lines 8.1e-6
+    // from it: no chord, and the strip where the edge is nearer kept the plane, d^2 1.1e-12 where
+    // it is 2.4e-18. (A centre near T', as "mirror" 11642's, has |k| far below 4 |l2|: there the
+    // line pair is the more precise, and the parabola would drop 1e-10.)
+    const double k_central = std::fabs(q.f - b1 * b1 / l1 - b2 * b2 / l2);
+    if (central && out.type == ConicType::LinePair && !(std::fabs(l2) > eps_par * std::fabs(l1)) &&
+        k_central > 4 * std::fabs(l2) && roots_moved(l1, disc, k_central) > 1e-9) {
+        out.type = ConicType::Empty;
+        out.components.clear();
+        decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
+    }
     if (!central) decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
 }
 

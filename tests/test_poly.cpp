@@ -322,6 +322,32 @@ TEST(Conic, FarThinEllipseWithinItsCentresRoundingIsNoPoint) {
     }
 }
 
+// An edge's quadratic less a nearly parallel plane's (generate_pairs9.py "tinydiff_coinc_far" 2315,
+// side A, target 2, these coefficients): l2 = -1.6e-14 of l1, the centre 70 away, branches 1.05e-6
+// either side of the edge's line across T'. The central form's k (7.5e-11) is within its rounding
+// (8e-11, k and l2 Y0^2 nearly cancelling), and zeroed it made a line pair 8.1e-6 either side:
+// the strip where the edge is nearer was not cut. The zero set must pass within 1e-9 of the
+// crossings of q = 0 with segments across both branches, found by bisection on q in long double,
+// to what the parabolic form drops: l2 (Y - Yr)^2 <= 4 |l2| = 6.4e-14, which moves roots 2.1e-6
+// apart by at most 6.4e-14 / (2 sqrt(disc) + sqrt(6.4e-14 l1)) = 2.4e-8 (disc = 1.5e-12, l1 = 1.17
+// scaled; 1.3e-9 measured).
+TEST(Conic, LinePairOfAZeroedKIsTakenAsItsBranchesNearT) {
+    Quadratic2 q;
+    q.a = 0.85501461607865792; q.b = 0.35208610079096087; q.c = 0.14498538392092755;
+    q.d = -0.59792380573416914; q.e = -0.24621878664182661; q.f = 0.41813656835809498;
+    const ConicDecomposition d = decompose_conic(q);
+    ASSERT_FALSE(d.components.empty()) << conic_type_name(d.type);
+    const Vec2 c{0.579355342689, 0.291310902648}, e{0.602287098052, 0.235622859401};  // on the edge's line
+    const Vec2 n{0.924670004, 0.380769463};                                               // its normal
+    for (double t : {-0.5, 0.0, 0.5, 1.0, 4.0})
+        for (double side : {1.0, -1.0}) {
+            const Vec2 p0 = c + t * (e - c), p1 = p0 + (side * 3e-6) * n;
+            ASSERT_LT(q_at(q, p0.x, p0.y), 0) << t;
+            ASSERT_GT(q_at(q, p1.x, p1.y), 0) << t << " " << side;
+            EXPECT_LT(distance_to_components(d, root_between(q, p0, p1)), 2.5e-8) << "t " << t << " side " << side;
+        }
+}
+
 // Two nearly parallel lines whose quadratic part has a small eigenvalue just above its rounding
 // (generate_pairs4.py "thin_shell" 14534, nearest first, these coefficients: l2 = -5.2e-14 of
 // l1). As a line pair crossing 600 away each line lay 4.2e-7 off the curve near T' (their angle
