@@ -184,14 +184,15 @@ size_t DomainMesh::leftover_region(int P, const SourceProjection& src, unsigned 
 void DomainMesh::claim_cracks(const SourceProjection& src, unsigned may_win) {
     std::vector<int>& cracks = tmp_.inside;  // free again: the region loop is done with it
     cracks.clear();
-    for (int P : tmp_.pending)  // most lie in regions passed over, whose corners no region may win holds
-        if (regions_holding_corners(P, src, may_win)) cracks.push_back(P);
     std::vector<int> slivers;
-    for (int P : tmp_.pending)
-        if (!regions_holding_corners(P, src, may_win)) {
-            const Box2 b = face_box(P);
-            if (face_area(P) <= kCluster * norm(b.hi - b.lo)) slivers.push_back(P);
+    for (int P : tmp_.pending) {  // most lie in regions passed over, whose corners no region may win holds
+        if (regions_holding_corners(P, src, may_win)) {
+            cracks.push_back(P);
+            continue;
         }
+        const Box2 b = cached_face_box(P);
+        if (face_area(P) <= kCluster * norm(b.hi - b.lo)) slivers.push_back(P);
+    }
     for (int P : cracks) claim_crack(P, src, may_win);
     for (int P : slivers) claim_sliver(P, src, may_win);
 }
