@@ -545,12 +545,13 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // from it: no chord, and the strip where the edge is nearer kept the plane, d^2 1.1e-12 where
     // it is 2.4e-18. (A centre near T', as "mirror" 11642's, has |k| far below 4 |l2|: there the
     // line pair is the more precise, and the parabola would drop 1e-10.)
-    const double k_central = std::fabs(q.f - b1 * b1 / l1 - b2 * b2 / l2);
-    if (central && out.type == ConicType::LinePair && !(std::fabs(l2) > eps_par * std::fabs(l1)) &&
-        k_central > 4 * std::fabs(l2) && roots_moved(l1, disc, k_central) > 1e-9) {
-        out.type = ConicType::Empty;
-        out.components.clear();
-        decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
+    if (central && out.type == ConicType::LinePair && !(std::fabs(l2) > eps_par * std::fabs(l1))) {
+        const double k = std::fabs(q.f - b1 * b1 / l1 - b2 * b2 / l2);
+        if (k > 4 * std::fabs(l2) && roots_moved(l1, disc, k) > 1e-9) {
+            out.type = ConicType::Empty;
+            out.components.clear();
+            decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
+        }
     }
     if (!central) decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
 }

@@ -69,28 +69,19 @@ struct SourceRegion {
 // How deep p lies in region r, in frame units (the lines' normals are unit): the least margin over
 // its lines; +inf where no line bounds it, -inf where a boundary plane parallel to T' leaves
 // nothing (the region is empty). The one membership test of the construction, validate() and
-// the overlay, each with its own tolerance.
-inline double region_margin(const SourceRegion& r, Vec2 p) {
+// the overlay, each with its own tolerance. Without `bevels`, by the region's lines alone: where
+// two lines meet at an angle theta, the construction places the corner only to its tolerance over
+// theta, and a bevel's margin there is the distance along the wedge (TargetSolver::validate()).
+inline double region_margin(const SourceRegion& r, Vec2 p, bool bevels = true) {
     double m = HUGE_VAL;
     for (const HalfPlane& h : r.planes) {
         if (h.kind == HalfPlane::None) return -HUGE_VAL;
-        if (h.kind == HalfPlane::Line) m = std::min(m, dot(h.n, p) - h.offset);
+        if (h.kind == HalfPlane::Line && (bevels || !h.bevel)) m = std::min(m, dot(h.n, p) - h.offset);
     }
     return m;
 }
 // Whether p lies in region r to within `tol` (frame units).
 inline bool in_region(const SourceRegion& r, Vec2 p, double tol) { return region_margin(r, p) >= -tol; }
-// The same by the region's lines alone, its bevels left out: where two lines meet at an angle
-// theta, the construction places the corner only to its tolerance over theta, and a bevel's margin
-// there is the distance along the wedge (TargetSolver::validate()).
-inline bool within_region_lines(const SourceRegion& r, Vec2 p, double tol) {
-    double m = HUGE_VAL;
-    for (const HalfPlane& h : r.planes) {
-        if (h.kind == HalfPlane::None) return false;
-        if (h.kind == HalfPlane::Line && !h.bevel) m = std::min(m, dot(h.n, p) - h.offset);
-    }
-    return m >= -tol;
-}
 
 // The regions of one source triangle, in the order they are inserted (vertex, edge, then face
 // regions, so the face region is what remains). A degenerate source (a segment or a point) has

@@ -683,7 +683,7 @@ std::string TargetSolver::validate(bool thorough) const {
             // the face region's line was 6.9e-6 beyond its bevel, and d^2 right to 4e-9).
             const double reach = std::max(DomainMesh::kVertexTolerance, delta);
             bool inside = false;
-            for (const SourceRegion* r : tied) inside = inside || within_region_lines(*r, p, (rim ? 4 : 2) * reach);
+            for (const SourceRegion* r : tied) inside = inside || region_margin(*r, p, false) >= -(rim ? 4 : 2) * reach;
             if (thorough && !inside && !sliver)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
                                      L.source, region_name(L.region), p.x, p.y), buf;

@@ -1614,6 +1614,14 @@ int grid_points_off_d2_ld(const TargetSolver& ts, const TriangleMesh& B, int n, 
     });
 }
 
+// The probe of the constructions checked in long double: d^2 on a 24 x 24 grid over T' against
+// sliver_d2_ld over B to `tol`, and the overlay's nearest-feature map.
+void expect_d2_ld_and_labels(const TargetSolver& ts, const TriangleMesh& B, double tol) {
+    EXPECT_EQ(grid_points_off_d2_ld(ts, B, 24, tol), 0);
+    const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
+    EXPECT_EQ(L.disagree, 0) << L.first;
+}
+
 TEST(Degenerate, SliverPlaneIsTakenThroughItsPointNearestTheTarget) {
     const TriangleMesh target = make_mesh({{-3659.7953959393876, 6688.814004763557, -9620.8646633590561},
                                            {-3659.7953959234778, 6688.8140047837396, -9620.8646633824046},
@@ -1638,11 +1646,7 @@ TEST(Degenerate, SliverPlaneIsTakenThroughItsPointNearestTheTarget) {
     const TargetFrame fr = TargetFrame::make(target.corners(0));
     const SourceProjection sliver = project_source(fr, B.corners(5), 5);
     EXPECT_LT((*region_quadratic(sliver, Region::abc))({0.509765625, 0.474609375}), 1e-6);
-    expect_constructions_hold(target, B, [&](const TargetSolver& ts) {
-        EXPECT_EQ(grid_points_off_d2_ld(ts, B, 24, 1e-3), 0);
-        const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
-        EXPECT_EQ(L.disagree, 0) << L.first;
-    });
+    expect_constructions_hold(target, B, [&](const TargetSolver& ts) { expect_d2_ld_and_labels(ts, B, 1e-3); });
 }
 
 // Two slivers of a fan (67 long, 5e-6 rad at their common apex, the origin), sharing a spoke,
@@ -1667,11 +1671,7 @@ TEST(Degenerate, SidePlaneOfASliverIsTakenThroughItsEndNearTheTarget) {
                                         {-65.317854492075355, -14.825609627696776, -5.7796331235295488},
                                         {-65.317856032017247, -14.825734585704129, -5.7792951619097801}},
                                        {{0, 1, 2}, {0, 2, 3}});
-    expect_constructions_hold(target, fan, [&](const TargetSolver& ts) {
-        EXPECT_EQ(grid_points_off_d2_ld(ts, fan, 24, 1e-5), 0);
-        const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
-        EXPECT_EQ(L.disagree, 0) << L.first;
-    });
+    expect_constructions_hold(target, fan, [&](const TargetSolver& ts) { expect_d2_ld_and_labels(ts, fan, 1e-5); });
 }
 
 // Segments (zero-area triangles) crossing at one point of a target 3e-4 across, and a sliver
@@ -1701,11 +1701,7 @@ TEST(Degenerate, ChordsLeaveCoincidentCrossingsIntoTheFace) {
                                       {-0.00023931293079047442, 0.00013622220482741618, -0.00016456926215398671},
                                       {-8.6607200088500462e-05, 5.0693029584641537e-05, -8.4390438854322453e-05}},
                                      {{0, 1, 1}, {2, 3, 4}, {5, 6, 6}, {7, 8, 9}, {10, 11, 11}});
-    expect_constructions_hold(target, B, [&](const TargetSolver& ts) {
-        EXPECT_EQ(grid_points_off_d2_ld(ts, B, 24, 1e-4), 0);
-        const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
-        EXPECT_EQ(L.disagree, 0) << L.first;
-    }, true);
+    expect_constructions_hold(target, B, [&](const TargetSolver& ts) { expect_d2_ld_and_labels(ts, B, 1e-4); }, true);
 }
 
 // A fin 2.5e-7 of T' across standing 1e-3 rad off perpendicular to T' among other tiny fins
@@ -1750,11 +1746,7 @@ TEST(Degenerate, RegionCheckHoldsATipToItsLinesNotItsBevel) {
                                       {-7226.3715334798198, -7530.1615008782837, 7683.7492126860243}},
                                      {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {10, 12, 11}, {13, 14, 15}, {14, 16, 15},
                                       {17, 18, 19}, {20, 21, 22}, {23, 24, 25}});
-    expect_constructions_hold(target, B, [&](const TargetSolver& ts) {
-        EXPECT_EQ(grid_points_off_d2_ld(ts, B, 24, 1e-6), 0);
-        const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
-        EXPECT_EQ(L.disagree, 0) << L.first;
-    }, true);
+    expect_constructions_hold(target, B, [&](const TargetSolver& ts) { expect_d2_ld_and_labels(ts, B, 1e-6); }, true);
 }
 
 // A sliver source 1.6e-8 across standing on T''s edge, among tiny triangles at the ends of that edge
@@ -1804,11 +1796,7 @@ TEST(Degenerate, SliverAlongRegionLinesGoesWhereTheSourceIsNearer) {
                                       {0.00011693186920279242, 3.8128890061718289e-05, -1.059854959186772e-05},
                                       {0.00011693186920279315, 3.8128890061717503e-05, -1.0598549591865308e-05}},
                                      {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 17}, {18, 19, 20}, {21, 22, 23}, {24, 25, 26}, {27, 27, 28}, {29, 30, 31}});
-    expect_constructions_hold(target, A, [&](const TargetSolver& ts) {
-        EXPECT_EQ(grid_points_off_d2_ld(ts, A, 24, 1e-6), 0);
-        const LabelCheck L = check_labels(*ts.domain_mesh(), ts.frame(), inserted_corners(ts), ts.inserted_sources());
-        EXPECT_EQ(L.disagree, 0) << L.first;
-    }, true);
+    expect_constructions_hold(target, A, [&](const TargetSolver& ts) { expect_d2_ld_and_labels(ts, A, 1e-6); }, true);
 }
 
 // A target 2.4e-7 across, a few ulps of its coordinates (3.5e8), lying in the plane of a sliver

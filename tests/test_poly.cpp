@@ -326,11 +326,11 @@ TEST(Conic, FarThinEllipseWithinItsCentresRoundingIsNoPoint) {
 // side A, target 2, these coefficients): l2 = -1.6e-14 of l1, the centre 70 away, branches 1.05e-6
 // either side of the edge's line across T'. The central form's k (7.5e-11) is within its rounding
 // (8e-11, k and l2 Y0^2 nearly cancelling), and zeroed it made a line pair 8.1e-6 either side:
-// the strip where the edge is nearer was not cut. The zero set must pass within 1e-9 of the
-// crossings of q = 0 with segments across both branches, found by bisection on q in long double,
-// to what the parabolic form drops: l2 (Y - Yr)^2 <= 4 |l2| = 6.4e-14, which moves roots 2.1e-6
-// apart by at most 6.4e-14 / (2 sqrt(disc) + sqrt(6.4e-14 l1)) = 2.4e-8 (disc = 1.5e-12, l1 = 1.17
-// scaled; 1.3e-9 measured).
+// the strip where the edge is nearer was not cut. The zero set must pass near the crossings of
+// q = 0 with segments across both branches, found by bisection on q in long double: within what
+// the parabolic form drops, l2 (Y - Yr)^2 <= 4 |l2| = 6.4e-14, which moves roots 2.1e-6 apart by
+// at most 6.4e-14 / (2 sqrt(disc) + sqrt(6.4e-14 l1)) = 2.4e-8 (disc = 1.5e-12, l1 = 1.17 scaled;
+// 1.3e-9 measured).
 TEST(Conic, LinePairOfAZeroedKIsTakenAsItsBranchesNearT) {
     Quadratic2 q;
     q.a = 0.85501461607865792; q.b = 0.35208610079096087; q.c = 0.14498538392092755;
