@@ -25,11 +25,13 @@
 #include "cascade.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <condition_variable>
 #include <functional>
 #include <mutex>
 #include <numeric>
+#include <unordered_map>
 
 #include "confirm_top.h"
 #include "parallel.h"
@@ -352,6 +354,11 @@ private:
             return;
         }
         atomic_max(L_, ts.max_sq());
+        if (p.depth == 0) {  // the whole target, constructed as paper mode does: solve_ties need not redo it
+            assert(p.c == A_.corners(p.target));
+            std::lock_guard<std::mutex> lock(whole_mutex_);
+            whole_[p.target] = {ts.max_sq(), ts.max_point_2d(), ts.slack()};
+        }
         // Its domain mesh's own maximum bounds the piece where its candidates may fall short (slack()).
         atomic_max(bound_sq_[p.target], ts.claimed_sq());
         // With its rounding: the same maximum computed over the whole target may come out higher.
@@ -386,6 +393,10 @@ private:
         for (;;) {
             parallel_for(ties.size(), threads, opt_.cancel, [&](size_t k) {
                 uint32_t t = ties[k];
+                if (const auto w = whole_.find(t); w != whole_.end()) {  // solved whole by the cascade
+                    out_.record(t, w->second.max_sq, w->second.at, w->second.slack);
+                    return;
+                }
                 TargetSolver ts(grid_, side_, t);  // no early stop: exactly paper mode's construction
                 ts.run();
                 ++solves_;
@@ -424,6 +435,13 @@ private:
     std::mutex upper_mutex_;
     std::vector<std::atomic<double>> best_sq_;   // per target: largest value of a solved piece (+ rounding), -1: none
     std::vector<std::atomic<double>> bound_sq_;  // per target: largest bound of a dropped piece
+    // Targets the cascade solved whole without an early stop (a depth-0 piece: paper mode's
+    // construction, as solve_ties would run it): near-coincident meshes far from the origin, where
+    // the tie margin is above L and nothing is dropped, had every target solved twice
+    // (generate_pairs10.py "fan_thin" 135: 965 targets of ~770 insertions each, 16 s).
+    struct Whole { double max_sq; Vec2 at; double slack; };
+    std::unordered_map<uint32_t, Whole> whole_;
+    std::mutex whole_mutex_;
 };
 
 }  // namespace
@@ -436,11 +454,13 @@ void TargetTable::resize(size_t n) {
     exact.assign(n, 0);
 }
 
-void TargetTable::record(uint32_t t, const TargetSolver& whole) {
-    value_sq[t] = whole.max_sq();
-    where[t] = whole.max_point_2d();
-    slack[t] = whole.slack();
-    bound[t] = std::sqrt(whole.max_sq());
+void TargetTable::record(uint32_t t, const TargetSolver& whole) { record(t, whole.max_sq(), whole.max_point_2d(), whole.slack()); }
+
+void TargetTable::record(uint32_t t, double max_sq, Vec2 at, double sliver_slack) {
+    value_sq[t] = max_sq;
+    where[t] = at;
+    slack[t] = sliver_slack;
+    bound[t] = std::sqrt(max_sq);
     exact[t] = 1;
 }
 

@@ -25,6 +25,7 @@ struct TargetTable {
     size_t solves = 0;              // exact constructions run (whole targets and pieces)
     void resize(size_t n);
     void record(uint32_t t, const TargetSolver& whole);  // target t solved whole
+    void record(uint32_t t, double max_sq, Vec2 at, double sliver_slack);  // the same from its values
 };
 
 // Fills `out` for mesh `side` of the grid measured against the other mesh. Every target whose

@@ -41,6 +41,7 @@
 #include <vector>
 
 #include "cascade.h"
+#include "cover_bound.h"
 #include "point_triangle.h"
 
 namespace hlens {
@@ -517,6 +518,12 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
                     tg.uv_of(seen.p, raised_uv);
                     raised_r = r / std::max(tg.size, 1e-300);
                 }
+            }
+            if (u + std::max(slack, cut_slack) > L + tol && r > tol) {
+                // Over many nearly parallel sources (a fan): bounded from those that cover it.
+                double cover_slack = 0;
+                const double c = cover_bound(g, tg.o, S, L + 0.5 * tol, cover_slack);
+                if (c + cover_slack <= L + tol) u = c, cut_slack = std::max(cut_slack, cover_slack);
             }
             u += std::max(slack, cut_slack);
             if (u <= L + tol || !(r > tol)) {  // done (a NaN radius too)

@@ -153,6 +153,40 @@ TEST(Cascade, NothingIsSplitWhereNothingCanBeDropped) {
     EXPECT_GE(r.b_to_a.upper, h);
 }
 
+// There too every target is solved in the cascade as one piece, with no early stop (the threshold
+// is 0): paper mode's construction. solve_ties, which solves whole every target that can reach the
+// result, took those from the cascade rather than constructing each again (generate_pairs10.py
+// "fan_thin" 135: two fans 3e11 from the origin, 965 targets of ~770 insertions each, every one
+// solved twice). A grid of 32 triangles 1e-10 above a copy of itself 2.4e7 from the origin: one
+// construction per target, and the distance by hand, h both ways (the planes are parallel, every
+// point over the other grid).
+TEST(Cascade, TargetsSolvedWholeAreNotSolvedAgain) {
+    const double x0 = 16777216, s = 0x1p-20, h = 1e-10;
+    std::vector<Vec3> pa, pb;
+    std::vector<Tri> t;
+    for (int j = 0; j <= 4; ++j)
+        for (int i = 0; i <= 4; ++i) pa.push_back({x0 + i * s, x0 + j * s, h}), pb.push_back({x0 + i * s, x0 + j * s, 0});
+    for (uint32_t j = 0; j < 4; ++j)
+        for (uint32_t i = 0; i < 4; ++i) {
+            const uint32_t v = 5 * j + i;
+            t.push_back({v, v + 1, v + 6});
+            t.push_back({v, v + 6, v + 5});
+        }
+    const TriangleMesh A = mesh_of(pa, t), B = mesh_of(pb, t);
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        HausdorffOptions opt;
+        opt.mode = mode;
+        const HausdorffResult r = hausdorff(A, B, opt);
+        for (const OneSidedResult* o : {&r.a_to_b, &r.b_to_a}) {
+            EXPECT_EQ(o->exact_targets, 32u) << mode_name(mode);
+            EXPECT_EQ(o->exact_solves, 32u) << mode_name(mode);
+            EXPECT_NEAR(o->distance, h, 1e-6 * h) << mode_name(mode);
+            EXPECT_LE(o->lower, h) << mode_name(mode);
+            EXPECT_GE(o->upper, h) << mode_name(mode);
+        }
+    }
+}
+
 TEST(Cascade, DegenerateConfigurations) {
     auto bump = [](double x, double y) { return 0.15 * std::sin(x) * std::cos(y - 0.3); };
     TriangleMesh flat = height_field(4, [](double, double) { return 0.0; });

@@ -3129,3 +3129,35 @@ TEST(Degenerate, CrackAcrossARegionLineGoesToARegionHoldingItAll) {
         },
         true);
 }
+
+// Generate_pairs10.py "fan_thin" 67, at unit size: a cone of 437 thin triangles, its apex h above
+// the middle of a flat 437-gon fanned from a rim vertex (435 long thin triangles, each crossing
+// dozens of the cone's). Every point of the cone lies over the polygon, so its distance is its
+// height: h at the apex, by hand. The confirmation bounded each piece by one source or a few cut
+// apart, and the pieces over dozens of sources outran its budget: 280 of 437 targets stayed open
+// and the interval's upper end was 0.24 of the diagonal (2.6e-5 where h was 1e-14, 47 s). They are
+// now bounded from the sources that cover them (cover_bound.cpp). Also 1e6 from the origin.
+TEST(Degenerate, ConeOverAFlatFanIsConfirmedToTheTolerance) {
+    const int n = 437;
+    for (const double far : {0.0, 1e6}) {
+        std::vector<Vec3> ring;
+        for (int i = 0; i < n; ++i)
+            ring.push_back(Vec3{std::cos(2 * 3.14159265358979323846 * i / n), std::sin(2 * 3.14159265358979323846 * i / n), 0} + Vec3{far, far, far});
+        std::vector<Vec3> pa = ring, pb = ring;
+        pa.push_back(Vec3{far, far, far + (far > 0 ? 1e-6 : 1e-10)});
+        const double h = pa.back().z - far;  // exact (Sterbenz): the apex's height over the plane z = far
+        std::vector<Tri> ta, tb;
+        for (int i = 0; i < n; ++i) ta.push_back({uint32_t(n), uint32_t(i), uint32_t((i + 1) % n)});
+        for (int i = 1; i + 1 < n; ++i) tb.push_back({0u, uint32_t(i), uint32_t(i + 1)});
+        const TriangleMesh A = make_mesh(pa, ta, "cone"), B = make_mesh(pb, tb, "flat fan");
+        const VoxelGrid grid(A, B);
+        for (Mode mode : {Mode::Paper, Mode::Fast}) {
+            HausdorffOptions opt;
+            opt.mode = mode;
+            const OneSidedResult r = one_sided(grid, 0, opt);
+            EXPECT_LE(r.lower, h) << mode_name(mode) << " at " << far;
+            EXPECT_GE(r.upper, h) << mode_name(mode) << " at " << far;
+            EXPECT_LE(r.upper - r.lower, 1e-9 * 2) << mode_name(mode) << " at " << far;  // the diagonal is 2
+        }
+    }
+}

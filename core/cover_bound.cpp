@@ -1,0 +1,171 @@
+// A bound of the distance over a triangle from the nearly parallel triangles that cover it (issue 8:
+// the certified interval; design notes, "Certified answer"). See cover_bound.h.
+//
+// confirm_top.cpp bounds a piece of a target by d(., T) at the piece's corners (convexity), cut
+// between neighbouring triangles of B at most kCuts deep. Over a fan of thin coplanar triangles a
+// piece lies over dozens of them, and the subdivision needed to close it outruns any budget
+// (generate_pairs10.py "fan_thin" 67: 280 of 437 targets left open, the interval's upper end 2.6e-5
+// where the distance is 1e-14, 47 s). Here the piece q is seen along its unit normal n:
+//   - for each triangle S of B that is not steep to n, a point x whose line x + t n meets S is
+//     within |h_S(x)| / |n.n_S| of it (h_S: the signed distance to S's plane), a linear function of
+//     x: over q at most its largest value at q's corners, b_S (a sliver's plane is uncertain: then
+//     the spread of n.(x - S_i) over q's corners x and S's corners, along_normal);
+//   - the triangles kept (b_S <= goal) cover q along n wherever their projections' union U does.
+//     q shrunk by delta on every side (K: convex) lies in U if its centroid does and no edge of U's
+//     boundary meets K, since a path from inside U to a point outside crosses that boundary. An edge
+//     (by vertex indices) is inside U where kept triangles lie on both its sides: each covers a
+//     half-disc of its interior points; a vertex whose edges are all inside is too. Any other edge
+//     (a boundary, a T-junction, an overlap) is tested: such cases are only left to the subdivision;
+//   - the strip of q outside K is within delta / sin(angle / 2) of K at a corner of that angle, and
+//     d is 1-Lipschitz, so the bound over q is max b_S plus that (a needle's is large: the caller's
+//     goal decides).
+// Everything is relative to o (a corner of the target, an input point): its rounding is that of the
+// target's size and the triangles' distance from it, a few ulps of them, below delta (2^-46).
+#include "cover_bound.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace hlens {
+
+namespace {
+
+constexpr double kSteep = 0.5;  // |n.n_S| below this: S is left out (its bound would be over twice its distance)
+
+struct Side {
+    uint32_t a, b;  // vertex indices, a < b
+    int side;       // where the triangle lies seen from a to b in the projection: +1 left, -1 right
+    Vec2 pa, pb;
+    bool operator<(const Side& o) const { return a != o.a ? a < o.a : b < o.b; }
+};
+
+// The inward unit normals of a counter-clockwise triangle's edges, edge i from p[i] to p[i + 1].
+std::array<Vec2, 3> inward(const std::array<Vec2, 3>& p) {
+    std::array<Vec2, 3> m;
+    for (int i = 0; i < 3; ++i) {
+        const Vec2 e = p[(i + 1) % 3] - p[i];
+        m[i] = Vec2{-e.y, e.x} / norm(e);
+    }
+    return m;
+}
+
+// Whether the segment [a, b] meets K = {x: dot(x - p[i], m[i]) >= delta for each i}.
+bool meets(const Vec2& a, const Vec2& b, const std::array<Vec2, 3>& p, const std::array<Vec2, 3>& m, double delta) {
+    double t0 = 0, t1 = 1;
+    for (int i = 0; i < 3; ++i) {
+        const double fa = dot(a - p[i], m[i]) - delta, fb = dot(b - p[i], m[i]) - delta;
+        if (fa < 0 && fb < 0) return false;
+        if (fa < 0) t0 = std::max(t0, fa / (fa - fb));
+        if (fb < 0) t1 = std::min(t1, fa / (fa - fb));
+    }
+    return t0 <= t1;
+}
+
+// Whether x lies in the triangle p (either orientation) at least delta inside every edge.
+bool inside(const Vec2& x, std::array<Vec2, 3> p, double delta) {
+    if (cross(p[1] - p[0], p[2] - p[0]) < 0) std::swap(p[1], p[2]);
+    const std::array<Vec2, 3> m = inward(p);
+    for (int i = 0; i < 3; ++i)
+        if (!(dot(x - p[i], m[i]) >= delta)) return false;
+    return true;
+}
+
+// How far along n a point of q is from S where its line meets S, at most: by S's plane, h_S(x) /
+// |n.n_S| at q's corners, the normal's rounding (an angle of a few ulps of the edges' product over
+// |cross|, large for a sliver) allowed for; or, as the point met is a convex combination of S's
+// corners, by the spread of n.x - n.S_i, which needs no normal. The lesser of the two.
+double along_normal(const std::array<Vec3, 3>& q, const std::array<Vec3, 3>& S, const Vec3& n, const Vec3& ns, double ls,
+                    double cosine) {
+    const double angle = 16 * 0x1p-52 * norm(S[1] - S[0]) * norm(S[2] - S[0]) / ls;
+    double by_plane = cosine > 2 * angle ? 0.0 : HUGE_VAL, by_corners = 0;
+    for (const Vec3& x : q) {
+        if (by_plane < HUGE_VAL)
+            by_plane = std::max(by_plane, (std::fabs(dot(x - S[0], ns)) / ls + angle * norm(x - S[0])) / (cosine - angle));
+        for (const Vec3& c : S) by_corners = std::max(by_corners, std::fabs(dot(x - c, n)));
+    }
+    return std::min(by_plane, by_corners);
+}
+
+}  // namespace
+
+double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack) {
+    const TriangleMesh& B = g.mesh();
+    const Vec3 nq = cross(q[1] - q[0], q[2] - q[0]);
+    const double lq = norm(nq), l1 = norm(q[1] - q[0]);
+    if (!(lq > 0 && l1 > 0)) return HUGE_VAL;
+    const Vec3 n = nq / lq, e1 = (q[1] - q[0]) / l1, e2 = cross(n, e1);
+    auto P = [&](const Vec3& x) { return Vec2{dot(x, e1), dot(x, e2)}; };
+    const std::array<Vec2, 3> pq{P(q[0]), P(q[1]), P(q[2])};  // counter-clockwise: n is q's normal
+    Vec2 lo = pq[0], hi = pq[0];
+    for (const Vec2& p : pq) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    double M = std::max({norm(q[0]), norm(q[1]), norm(q[2])});
+
+    std::vector<uint32_t> near;
+    for (size_t v : g.voxels_of_triangle({o + q[0], o + q[1], o + q[2]})) near.insert(near.end(), g.begin(v), g.end(v));
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+
+    std::vector<std::array<Vec2, 3>> kept;
+    std::vector<Side> sides;
+    double bound = -HUGE_VAL;
+    for (uint32_t t : near) {
+        const auto c = B.corners(t);
+        const std::array<Vec3, 3> S{c[0] - o, c[1] - o, c[2] - o};
+        const Vec3 ns = cross(S[1] - S[0], S[2] - S[0]);
+        const double ls = norm(ns);
+        if (!(ls > 0)) continue;
+        const double cosine = std::fabs(dot(n, ns)) / ls;
+        if (!(cosine >= kSteep)) continue;
+        const double b = along_normal(q, S, n, ns, ls, cosine);
+        if (!(b <= goal)) continue;
+        const std::array<Vec2, 3> ps{P(S[0]), P(S[1]), P(S[2])};
+        if (std::max({ps[0].x, ps[1].x, ps[2].x}) < lo.x || std::min({ps[0].x, ps[1].x, ps[2].x}) > hi.x ||
+            std::max({ps[0].y, ps[1].y, ps[2].y}) < lo.y || std::min({ps[0].y, ps[1].y, ps[2].y}) > hi.y)
+            continue;  // beside q: not needed to cover it
+        // Its orientation decides which side of its edges it covers: it must be certain. The
+        // projected corners are off by a few ulps of their magnitude m, the doubled area by
+        // a few ulps of m times the edges; a sliver 1e-12 wide between two triangles is kept.
+        const double area2 = cross(ps[1] - ps[0], ps[2] - ps[0]);
+        const double m = std::max({norm(S[0]), norm(S[1]), norm(S[2])});
+        if (!(std::fabs(area2) > 0x1p-46 * m * (norm(ps[1] - ps[0]) + norm(ps[2] - ps[0])))) continue;
+        bound = std::max(bound, b);
+        M = std::max(M, m);
+        kept.push_back(ps);
+        const Tri& f = B.triangles[t];
+        for (int i = 0; i < 3; ++i) {
+            const int j = (i + 1) % 3;
+            Side s{f[i], f[j], area2 > 0 ? 1 : -1, ps[i], ps[j]};
+            if (s.a > s.b) std::swap(s.a, s.b), std::swap(s.pa, s.pb), s.side = -s.side;
+            sides.push_back(s);
+        }
+    }
+    if (kept.empty()) return HUGE_VAL;
+
+    const double delta = 0x1p-46 * M;  // 16 times the projected corners' rounding
+    const std::array<Vec2, 3> m = inward(pq);
+    const Vec2 centre = (pq[0] + pq[1] + pq[2]) / 3.0;
+    if (!inside(centre, pq, delta) || std::none_of(kept.begin(), kept.end(), [&](const auto& ps) { return inside(centre, ps, delta); }))
+        return HUGE_VAL;
+    std::sort(sides.begin(), sides.end());
+    for (size_t i = 0, j; i < sides.size(); i = j) {
+        bool left = false, right = false;
+        for (j = i; j < sides.size() && sides[j].a == sides[i].a && sides[j].b == sides[i].b; ++j)
+            (sides[j].side > 0 ? left : right) = true;
+        if (left && right) continue;  // inside U
+        for (size_t k = i; k < j; ++k)
+            if (meets(sides[k].pa, sides[k].pb, pq, m, delta)) return HUGE_VAL;
+    }
+    // The strip outside K: at corner i (angle a), K's corner lies delta / sin(a / 2) inside.
+    double strip = 0;
+    for (int i = 0; i < 3; ++i) {
+        const Vec2 u = (pq[(i + 1) % 3] - pq[i]) / norm(pq[(i + 1) % 3] - pq[i]), w = (pq[(i + 2) % 3] - pq[i]) / norm(pq[(i + 2) % 3] - pq[i]);
+        const double half_sine = std::sqrt(std::max(0.0, 0.5 * (1 - dot(u, w))));
+        if (!(half_sine > 0)) return HUGE_VAL;
+        strip = std::max(strip, delta / half_sine);
+    }
+    slack = 256 * 0x1p-52 * (bound + 2 * M);
+    return bound + strip;
+}
+
+}  // namespace hlens

@@ -1,0 +1,115 @@
+// Tests of the bound over a triangle from the nearly parallel triangles that cover it
+// (core/cover_bound.cpp, suite CoverBound). Oracles: heights by hand, brute-force distances.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <hlens/cover_bound.h>
+#include <hlens/voxel_grid.h>
+
+#include "test_meshes.h"
+
+using namespace hlens;
+using hlens_test::brute_distance;
+using hlens_test::mesh_of;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The regular n-gon of radius 1 in z = 0 fanned from its vertex 0: n - 2 long thin triangles that
+// all cross the middle (generate_pairs10.py "fan_thin"). `skip`: a triangle left out (a hole).
+TriangleMesh rim_fan(int n, int skip = -1) {
+    std::vector<Vec3> p;
+    for (int i = 0; i < n; ++i) p.push_back({std::cos(2 * kPi * i / n), std::sin(2 * kPi * i / n), 0});
+    std::vector<Tri> t;
+    for (int i = 1; i + 1 < n; ++i)
+        if (i != skip) t.push_back({0u, uint32_t(i), uint32_t(i + 1)});
+    return mesh_of(p, t);
+}
+
+double bound_of(const MeshGrid& g, const std::array<Vec3, 3>& q, double goal = 1.0) {
+    double slack = 0;
+    const double b = cover_bound(g, q[0], {Vec3{}, q[1] - q[0], q[2] - q[0]}, goal, slack);
+    EXPECT_GE(slack, 0.0);
+    EXPECT_LE(slack, 1e-12);
+    return b;
+}
+
+}  // namespace
+
+// A triangle over the middle of the fan crosses dozens of its sources. Seen along its own normal n,
+// each point's line meets the plane z = 0 within the disc, at a distance h / |n_z| (h its height):
+// largest at the highest corner. The bound is that, plus a strip of rounding.
+TEST(CoverBound, ATriangleOverAFanIsBoundedByItsHeightAlongItsNormal) {
+    const TriangleMesh B = rim_fan(200);
+    const MeshGrid g(B);
+    const std::array<Vec3, 3> q{Vec3{-0.3, -0.2, 0.001}, Vec3{0.4, -0.1, 0.002}, Vec3{0.0, 0.35, 0.003}};
+    const Vec3 n = cross(q[1] - q[0], q[2] - q[0]);
+    const double expect = 0.003 / (std::fabs(n.z) / norm(n));
+    const double b = bound_of(g, q);
+    EXPECT_GE(b, expect);
+    EXPECT_LE(b, expect + 1e-12);
+    // The goal drops every source whose own bound is above it: none is left to cover q.
+    EXPECT_EQ(bound_of(g, q, 0.5 * expect), HUGE_VAL);
+}
+
+// Where the union does not cover the triangle, there is no bound: past the rim, over a hole.
+TEST(CoverBound, NoBoundWhereTheSourcesLeaveAGap) {
+    const std::array<Vec3, 3> q{Vec3{-0.3, -0.2, 0.001}, Vec3{0.4, -0.1, 0.002}, Vec3{0.0, 0.35, 0.003}};
+    {
+        const TriangleMesh B = rim_fan(200);
+        const MeshGrid g(B);
+        ASSERT_LT(bound_of(g, q), 1.0);
+        EXPECT_EQ(bound_of(g, {q[0], q[1], Vec3{0.0, 1.02, 0.003}}), HUGE_VAL);  // a corner past the rim
+    }
+    // The fan's triangle 100 runs from vertex 0 at (1, 0) to the far side, across the middle.
+    const TriangleMesh B = rim_fan(200, 100);
+    const MeshGrid g(B);
+    EXPECT_EQ(bound_of(g, q), HUGE_VAL);
+}
+
+// Two triangulations of one square overlap: no edge but the two diagonals has triangles on both
+// sides, and those are inside the union. A triangle inside the square is covered; one that crosses
+// its side is not.
+TEST(CoverBound, OverlappingTriangulationsCoverTheirSquare) {
+    const TriangleMesh B = mesh_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}, {0, 1, 3}, {1, 2, 3}});
+    const MeshGrid g(B);
+    const double b = bound_of(g, {Vec3{0.1, 0.1, 0.01}, Vec3{0.9, 0.2, 0.01}, Vec3{0.3, 0.9, 0.01}});
+    EXPECT_GE(b, 0.01);
+    EXPECT_LE(b, 0.01 + 1e-12);
+    EXPECT_EQ(bound_of(g, {Vec3{0.1, 0.1, 0.01}, Vec3{1.1, 0.2, 0.01}, Vec3{0.3, 0.9, 0.01}}), HUGE_VAL);
+}
+
+// Soundness against brute force: fans whose vertices are lifted at random (the sources not
+// coplanar), every third with slivers (rim vertices 1e-9 to 1e-13 from the one before: sources
+// whose planes rounding tilts), triangles at random over them; wherever a bound is given, no point
+// of the triangle (a dense grid of barycentric samples) is farther from the fan than it.
+TEST(CoverBound, NeverBelowTheDistanceAnywhereOnTheTriangle) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int bounded = 0;
+    for (int trial = 0; trial < 90; ++trial) {
+        TriangleMesh B = rim_fan(12 + trial);
+        for (Vec3& p : B.positions) p.z = 0.05 * U(rng);
+        if (trial % 3 == 0)
+            for (size_t i = 2; i + 1 < B.positions.size(); i += 3) {
+                const Vec3 step = B.positions[i + 1] - B.positions[i];
+                B.positions[i + 1] = B.positions[i] + std::pow(10.0, -9 - 4 * (0.5 + 0.5 * U(rng))) * step / norm(step);
+            }
+        const MeshGrid g(B);
+        std::array<Vec3, 3> q;
+        const double reach = trial % 2 ? 0.6 : 0.9;  // 0.9: often past the rim, where coverage decides
+        for (Vec3& c : q) c = {reach * U(rng), reach * U(rng), 0.1 * U(rng)};
+        const double b = bound_of(g, q);
+        if (!(b < HUGE_VAL)) continue;
+        ++bounded;
+        double truth = 0;
+        for (int i = 0; i <= 40; ++i)
+            for (int j = 0; i + j <= 40; ++j)
+                truth = std::max(truth, brute_distance(q[0] + (i / 40.0) * (q[1] - q[0]) + (j / 40.0) * (q[2] - q[0]), B));
+        EXPECT_GE(b, truth) << "trial " << trial;
+    }
+    EXPECT_GE(bounded, 30) << "too few triangles bounded for the test to mean much";
+}
