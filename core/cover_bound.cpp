@@ -8,8 +8,9 @@
 // where the distance is 1e-14, 47 s). Here the piece q is seen along its unit normal n:
 //   - for each triangle S of B that is not steep to n, a point x whose line x + t n meets S is
 //     within |h_S(x)| / |n.n_S| of it (h_S: the signed distance to S's plane), a linear function of
-//     x: over q at most its largest value at q's corners, b_S (a sliver's plane is uncertain: then
-//     the spread of n.(x - S_i) over q's corners x and S's corners, along_normal);
+//     x: over the part of q that S covers at most its largest value at that part's corners, b_S
+//     (a sliver's plane is uncertain: then the spread of n.(x - S_i) over those corners x and S's
+//     corners, along_normal);
 //   - the triangles kept (b_S <= goal) cover q along n wherever their projections' union U does.
 //     q shrunk by delta on every side (K: convex) lies in U if its centroid does and no edge of U's
 //     boundary meets K, since a path from inside U to a point outside crosses that boundary. An edge
@@ -71,15 +72,39 @@ bool inside(const Vec2& x, std::array<Vec2, 3> p, double delta) {
     return true;
 }
 
-// How far along n a point of q is from S where its line meets S, at most: by S's plane, h_S(x) /
-// |n.n_S| at q's corners, the normal's rounding (an angle of a few ulps of the edges' product over
-// |cross|, large for a sliver) allowed for; or, as the point met is a convex combination of S's
-// corners, by the spread of n.x - n.S_i, which needs no normal. The lesser of the two.
-double along_normal(const std::array<Vec3, 3>& q, const std::array<Vec3, 3>& S, const Vec3& n, const Vec3& ns, double ls,
+// The part of the counter-clockwise triangle p inside the triangle s (either orientation) grown by
+// `grow` on every side: at most 6 corners, in `out` (none if they miss each other).
+int clip_to(const std::array<Vec2, 3>& p, std::array<Vec2, 3> s, double grow, std::array<Vec2, 9>& out) {
+    if (cross(s[1] - s[0], s[2] - s[0]) < 0) std::swap(s[1], s[2]);
+    const std::array<Vec2, 3> m = inward(s);
+    std::array<Vec2, 9> tmp;
+    int n = 3;
+    std::copy(p.begin(), p.end(), out.begin());
+    for (int k = 0; k < 3 && n > 0; ++k) {
+        int c = 0;
+        for (int i = 0; i < n; ++i) {
+            const Vec2 &x = out[i], &y = out[(i + 1) % n];
+            const double fx = dot(x - s[k], m[k]) + grow, fy = dot(y - s[k], m[k]) + grow;
+            if (fx >= 0) tmp[c++] = x;
+            if ((fx >= 0) != (fy >= 0)) tmp[c++] = x + (fx / (fx - fy)) * (y - x);
+        }
+        n = c;
+        std::copy(tmp.begin(), tmp.begin() + n, out.begin());
+    }
+    return n;
+}
+
+// How far along n a point x of q is from S where its line meets S, at most, over the points xs: by
+// S's plane, h_S(x) / |n.n_S| (linear: largest at a corner of their hull), the normal's rounding
+// (an angle of a few ulps of the edges' product over |cross|, large for a sliver) allowed for; or,
+// as the point met is a convex combination of S's corners, by the spread of n.x - n.S_i, which
+// needs no normal. The lesser of the two.
+double along_normal(const Vec3* xs, int count, const std::array<Vec3, 3>& S, const Vec3& n, const Vec3& ns, double ls,
                     double cosine) {
     const double angle = 16 * 0x1p-52 * norm(S[1] - S[0]) * norm(S[2] - S[0]) / ls;
     double by_plane = cosine > 2 * angle ? 0.0 : HUGE_VAL, by_corners = 0;
-    for (const Vec3& x : q) {
+    for (int i = 0; i < count; ++i) {
+        const Vec3& x = xs[i];
         if (by_plane < HUGE_VAL)
             by_plane = std::max(by_plane, (std::fabs(dot(x - S[0], ns)) / ls + angle * norm(x - S[0])) / (cosine - angle));
         for (const Vec3& c : S) by_corners = std::max(by_corners, std::fabs(dot(x - c, n)));
@@ -117,8 +142,6 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
         if (!(ls > 0)) continue;
         const double cosine = std::fabs(dot(n, ns)) / ls;
         if (!(cosine >= kSteep)) continue;
-        const double b = along_normal(q, S, n, ns, ls, cosine);
-        if (!(b <= goal)) continue;
         const std::array<Vec2, 3> ps{P(S[0]), P(S[1]), P(S[2])};
         if (std::max({ps[0].x, ps[1].x, ps[2].x}) < lo.x || std::min({ps[0].x, ps[1].x, ps[2].x}) > hi.x ||
             std::max({ps[0].y, ps[1].y, ps[2].y}) < lo.y || std::min({ps[0].y, ps[1].y, ps[2].y}) > hi.y)
@@ -129,6 +152,16 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
         const double area2 = cross(ps[1] - ps[0], ps[2] - ps[0]);
         const double m = std::max({norm(S[0]), norm(S[1]), norm(S[2])});
         if (!(std::fabs(area2) > 0x1p-46 * m * (norm(ps[1] - ps[0]) + norm(ps[2] - ps[0])))) continue;
+        // S bounds d only where it covers q: over q's part within S (grown by more than the
+        // projections' rounding, so that it holds the exact part), back in q's plane. One that
+        // misses q has no edge through q's shrunk part either.
+        std::array<Vec2, 9> part;
+        const int k = clip_to(pq, ps, 0x1p-46 * std::max(M, m), part);
+        if (k == 0) continue;
+        std::array<Vec3, 9> xs;
+        for (int i = 0; i < k; ++i) xs[i] = q[0] + (part[i].x - pq[0].x) * e1 + (part[i].y - pq[0].y) * e2;
+        const double b = along_normal(xs.data(), k, S, n, ns, ls, cosine);
+        if (!(b <= goal)) continue;
         bound = std::max(bound, b);
         M = std::max(M, m);
         kept.push_back(ps);
