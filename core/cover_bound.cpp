@@ -28,6 +28,8 @@
 #include <cmath>
 #include <vector>
 
+#include "regions.h"
+
 namespace hlens {
 
 namespace {
@@ -72,26 +74,13 @@ bool inside(const Vec2& x, std::array<Vec2, 3> p, double delta) {
     return true;
 }
 
-// The part of the counter-clockwise triangle p inside the triangle s (either orientation) grown by
-// `grow` on every side: at most 6 corners, in `out` (none if they miss each other).
-int clip_to(const std::array<Vec2, 3>& p, std::array<Vec2, 3> s, double grow, std::array<Vec2, 9>& out) {
+// The triangle s (either orientation) grown by `grow` on every side, as the half-planes that
+// clip_convex_in_place takes (regions.cpp).
+void grown_half_planes(std::array<Vec2, 3> s, double grow, std::vector<HalfPlane>& out) {
     if (cross(s[1] - s[0], s[2] - s[0]) < 0) std::swap(s[1], s[2]);
     const std::array<Vec2, 3> m = inward(s);
-    std::array<Vec2, 9> tmp;
-    int n = 3;
-    std::copy(p.begin(), p.end(), out.begin());
-    for (int k = 0; k < 3 && n > 0; ++k) {
-        int c = 0;
-        for (int i = 0; i < n; ++i) {
-            const Vec2 &x = out[i], &y = out[(i + 1) % n];
-            const double fx = dot(x - s[k], m[k]) + grow, fy = dot(y - s[k], m[k]) + grow;
-            if (fx >= 0) tmp[c++] = x;
-            if ((fx >= 0) != (fy >= 0)) tmp[c++] = x + (fx / (fx - fy)) * (y - x);
-        }
-        n = c;
-        std::copy(tmp.begin(), tmp.begin() + n, out.begin());
-    }
-    return n;
+    out.resize(3);
+    for (int k = 0; k < 3; ++k) out[k] = HalfPlane{m[k], dot(m[k], s[k]) - grow};
 }
 
 // How far along n a point x of q is from S where its line meets S, at most, over the points xs: by
@@ -99,12 +88,11 @@ int clip_to(const std::array<Vec2, 3>& p, std::array<Vec2, 3> s, double grow, st
 // (an angle of a few ulps of the edges' product over |cross|, large for a sliver) allowed for; or,
 // as the point met is a convex combination of S's corners, by the spread of n.x - n.S_i, which
 // needs no normal. The lesser of the two.
-double along_normal(const Vec3* xs, int count, const std::array<Vec3, 3>& S, const Vec3& n, const Vec3& ns, double ls,
+double along_normal(const std::vector<Vec3>& xs, const std::array<Vec3, 3>& S, const Vec3& n, const Vec3& ns, double ls,
                     double cosine) {
     const double angle = 16 * 0x1p-52 * norm(S[1] - S[0]) * norm(S[2] - S[0]) / ls;
     double by_plane = cosine > 2 * angle ? 0.0 : HUGE_VAL, by_corners = 0;
-    for (int i = 0; i < count; ++i) {
-        const Vec3& x = xs[i];
+    for (const Vec3& x : xs) {
         if (by_plane < HUGE_VAL)
             by_plane = std::max(by_plane, (std::fabs(dot(x - S[0], ns)) / ls + angle * norm(x - S[0])) / (cosine - angle));
         for (const Vec3& c : S) by_corners = std::max(by_corners, std::fabs(dot(x - c, n)));
@@ -133,6 +121,9 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
 
     std::vector<std::array<Vec2, 3>> kept;
     std::vector<Side> sides;
+    std::vector<HalfPlane> planes;
+    std::vector<Vec2> part, tmp;
+    std::vector<Vec3> xs;
     double bound = -HUGE_VAL;
     for (uint32_t t : near) {
         const auto c = B.corners(t);
@@ -155,12 +146,13 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
         // S bounds d only where it covers q: over q's part within S (grown by more than the
         // projections' rounding, so that it holds the exact part), back in q's plane. One that
         // misses q has no edge through q's shrunk part either.
-        std::array<Vec2, 9> part;
-        const int k = clip_to(pq, ps, 0x1p-46 * std::max(M, m), part);
-        if (k == 0) continue;
-        std::array<Vec3, 9> xs;
-        for (int i = 0; i < k; ++i) xs[i] = q[0] + (part[i].x - pq[0].x) * e1 + (part[i].y - pq[0].y) * e2;
-        const double b = along_normal(xs.data(), k, S, n, ns, ls, cosine);
+        grown_half_planes(ps, 0x1p-46 * std::max(M, m), planes);
+        part.assign(pq.begin(), pq.end());
+        clip_convex_in_place(part, planes, tmp);
+        if (part.empty()) continue;
+        xs.clear();
+        for (const Vec2& x : part) xs.push_back(q[0] + (x.x - pq[0].x) * e1 + (x.y - pq[0].y) * e2);
+        const double b = along_normal(xs, S, n, ns, ls, cosine);
         if (!(b <= goal)) continue;
         bound = std::max(bound, b);
         M = std::max(M, m);

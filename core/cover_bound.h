@@ -13,8 +13,8 @@ namespace hlens {
 // or HUGE_VAL: the triangles of the mesh listed in q's voxels whose own bound is at most `goal` are
 // projected along q's normal; where their union covers q but for a strip of rounding along its
 // edges, every point's line along the normal meets one of them, and the bound is the largest of
-// their distances along the normal at q's corners, plus the strip's width. `slack` becomes the
-// bound's rounding (it is not in the returned value).
+// their distances along the normal over the parts of q they cover, plus the strip's width.
+// `slack` becomes the bound's rounding (it is not in the returned value).
 double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack);
 
 }  // namespace hlens
