@@ -385,7 +385,7 @@ double roots_moved(double l1, double disc, double dropped) {
 // where q only touches 0 (a double line, disc ~ 0) b2 = 1e-16 would move its roots by 1e-8
 // (independent pair "parallel_offset" 1389: a parabola 4e15 long cut across a domain).
 void decompose_parabolic(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec2 e2, double b1, double b2, double disc,
-                         ConicDecomposition& out) {
+                         bool l2_noise, ConicDecomposition& out) {
     if (std::fabs(b2) > eps_par || (std::fabs(b2) > eps_b2 && roots_moved(l1, disc, 4 * std::fabs(b2)) > 1e-9)) {
         // Y = -(l1 X^2 + 2 b1 X + f) / (2 b2), parametrised by X = Xa + t. Anchored at the vertex
         // (Xa = -b1 / l1) unless that lies far outside the target (a nearly flat parabola, as the
@@ -402,7 +402,7 @@ void decompose_parabolic(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec
         // chord there: no chord, and a sliver 0.2 long, where the other source is nearer by up to
         // 1e-6 in d^2, went to the farther one. Only where that term is a correction (the centre of
         // the conic, -b2 / l2, lies far along the axis) and l2 is no noise (l2_noise).
-        if (std::fabs(l2) > 1e-14) {
+        if (!l2_noise) {
             const double Ylo = std::min(0.0, e2.x) + std::min(0.0, e2.y), Yhi = std::max(0.0, e2.x) + std::max(0.0, e2.y);
             const double Ya0 = -(l1 * Xa * Xa + 2 * b1 * Xa + f) / (2 * b2);
             const double Yr = std::isfinite(Ya0) ? std::min(std::max(Ya0, Ylo), Yhi) : 0.5 * (Ylo + Yhi);
@@ -461,7 +461,7 @@ void decompose_parabolic(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec
 
 }  // namespace
 
-void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
+void decompose_conic(const Quadratic2& q0, ConicDecomposition& out, double l2_rounding) {
     out.type = ConicType::Empty;
     out.components.clear();
     double s = q0.scale();
@@ -504,7 +504,14 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // the scale: two nearly parallel planes' quadratics), l2 = 1e-16 passed the relative test, and
     // the "ellipse" it made had semi-axes 7e7 and 9e11, its points near T' 1.7e-4 off the curve
     // (generate_pairs.py "perp" 5811: no chord found, a face kept a source 0.035 farther).
-    const bool l2_noise = !(std::fabs(l2) > 1e-14);
+    // So is an l2 within the rounding the caller knows q's quadratic part to (l2_rounding, in q0's
+    // units): a difference of two quadratics whose parts nearly cancel is exact only to an ulp of
+    // the operands, and scaled by its own small size that can be far above 1e-14. Generate_pairs11.py
+    // "combo" 363, side B, target 0, the paper's order: a sliver's nearly vertical edge's part
+    // (1 - 9e-11 on the diagonal) less a vertex's, rank one but for l2 = -1.35e-14 (scaled by
+    // 1/1.2e-3; an ulp of the operands is 1.8e-13 there), taken as an ellipse 1e10 long whose
+    // points near T' crossed no arc: a face went whole to the farther source, a step of d^2 4e-6.
+    const bool l2_noise = !(std::fabs(l2) > std::max(1e-14, l2_rounding / s));
     const double disc = b1 * b1 - l1 * q.f;
     bool central = !l2_noise && std::fabs(l2) > eps_par * std::fabs(l1);
     // Only where the central form is the more precise near T': l2 is known to ~4 ulps of the
@@ -534,7 +541,7 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
     // cut, and a sliver along it kept a source 3.7e-11 farther in d^2.
     if (central && out.type == ConicType::Point && !(std::fabs(l2) > eps_par * std::fabs(l1))) {
         out.type = ConicType::Empty;
-        decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
+        decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, l2_noise, out);
     }
     // So is a line pair whose k, zeroed within its rounding there, moves the roots near T' by more
     // than 1e-9 and more than the parabolic form's dropped term, l2 (Y - Yr)^2 <= 4 |l2|, does: k
@@ -550,10 +557,10 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out) {
         if (k > 4 * std::fabs(l2) && roots_moved(l1, disc, k) > 1e-9) {
             out.type = ConicType::Empty;
             out.components.clear();
-            decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
+            decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, l2_noise, out);
         }
     }
-    if (!central) decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, out);
+    if (!central) decompose_parabolic(q, l1, l2, e1, e2, b1, b2, disc, l2_noise, out);
 }
 
 }  // namespace hlens

@@ -51,6 +51,7 @@ struct Quadratic2 {
     }
     Interval range(Vec2 lo, Vec2 hi) const;  // contains q over the box [lo, hi]
     bool is_linear() const { return a == 0 && b == 0 && c == 0; }
+    double quad_scale() const { return std::max({std::fabs(a), std::fabs(b), std::fabs(c)}); }  // of the quadratic part
     std::string to_string() const;
 };
 
@@ -166,7 +167,9 @@ struct ConicDecomposition {
 // Decompose q = 0 into curve components. Zero sets across which q does not change sign (a double
 // line, a single point) have no components: they never separate a positive from a negative part.
 ConicDecomposition decompose_conic(const Quadratic2& q);
-void decompose_conic(const Quadratic2& q, ConicDecomposition& out);  // the same, reusing `out`
+// The same, reusing `out`; `l2_rounding` (in q's units) bounds the rounding of q's quadratic part's
+// smaller eigenvalue where the caller knows it (q a difference of quadratics: an ulp of theirs).
+void decompose_conic(const Quadratic2& q, ConicDecomposition& out, double l2_rounding = 0);
 // The line through `point` along `dir` as decompose_conic gives its lines (unit direction, anchored
 // at the foot of the origin, which keeps parameters small).
 CurveComponent line_component(Vec2 point, Vec2 dir);

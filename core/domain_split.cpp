@@ -450,11 +450,13 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     return out;
 }
 
-void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<SplitPiece>& out) {
+void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<SplitPiece>& out, double quad) {
     out.clear();
     double gs = g_in.scale();
     if (!(gs > 0)) { out.push_back({f, 0}); return; }
     Quadratic2 g = g_in * (1.0 / gs);
+    // Each of a, b, c a few ulps of `quad` off: the smaller eigenvalue by up to about twice that.
+    tmp_.l2_rounding = 8 * 0x1p-52 * quad / gs;
     {
         // Most faces lie wholly on one side: a conservative bound over the face's box says so.
         Box2 b = cached_face_box(f);
@@ -482,6 +484,7 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         if (r.hi < -kZero) { out.push_back({f, -1}); return; }
     }
     if (!g_in.is_linear() && split_by_line_pair(f, g, out)) return;
+    tmp_.l2_rounding = 8 * 0x1p-52 * quad / gs;  // (split_by_line_pair's cuts may have reset it)
     SplitCall s(f, g, g_in.is_linear(), tmp_);
     split_boundary_where_g_changes_sign(s);  // 1.
     classify_by_side(s);                     // 2.
@@ -505,7 +508,7 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
 bool DomainMesh::split_by_line_pair(int f, const Quadratic2& g, std::vector<SplitPiece>& out) {
     if (!(g.a * g.c - g.b * g.b < 0)) return false;
     ConicDecomposition& dec = tmp_.dec;
-    decompose_conic(g, dec);
+    decompose_conic(g, dec, tmp_.l2_rounding);
     if (dec.type != ConicType::LinePair || dec.components.size() != 2) return false;
     const CurveComponent l1 = dec.components[0], l2 = dec.components[1];
     Vec2 m;
@@ -663,7 +666,7 @@ bool DomainMesh::at_centre(const Quadratic2& g, Vec2 p) {
 // g = 0 is a line pair as decompose_conic has it (its value at the centre within that centre's
 // rounding), which is how find_chords will draw it.
 bool DomainMesh::line_pair(SplitCall& s) {
-    decompose_conic(s.g, tmp_.dec);
+    decompose_conic(s.g, tmp_.dec, tmp_.l2_rounding);
     return tmp_.dec.type == ConicType::LinePair;
 }
 
@@ -700,7 +703,7 @@ bool DomainMesh::split_arc_on_the_curve(SplitCall& s, int e) {
     for (const Vec2 p : {a, b})
         if (!(std::fabs(g(p)) <= kOnCurve * norm(g.gradient(p)))) return false;
     ConicDecomposition& dec = tmp_.dec;  // (find_chords decomposes g again)
-    decompose_conic(g, dec);
+    decompose_conic(g, dec, tmp_.l2_rounding);
     if (dec.type != ConicType::LinePair || dec.components.size() != 2) return false;
     bool along = false;
     for (const CurveComponent& line : dec.components)
@@ -797,7 +800,7 @@ void DomainMesh::find_chords(SplitCall& s) {
         if (s.is_zero(v) && std::find(zverts.begin(), zverts.end(), v) == zverts.end()) zverts.push_back(v);
     }
     ConicDecomposition& dec = tmp_.dec;
-    decompose_conic(s.g, dec);
+    decompose_conic(s.g, dec, tmp_.l2_rounding);
     if (dec.type == ConicType::Hyperbola) hyperbola_as_line_pair(s.g, dec);
     if (dec.type == ConicType::LinePair && dec.components.size() == 2) add_line_pair_centre(s);
     s.line_like = dec.type == ConicType::Line || dec.type == ConicType::ParallelLines || dec.type == ConicType::LinePair;

@@ -369,3 +369,27 @@ TEST(Conic, NearlyParallelLinesCrossingFarAwayStayOnTheirCurveNearT) {
             EXPECT_LT(distance_to_components(d, root_between(q, p0, p1)), 1e-9) << "x " << x << " side " << side;
         }
 }
+
+// A sliver's nearly vertical edge's quadratic less a vertex's (generate_pairs11.py "combo" 363,
+// side B, target 0, the paper's order, these coefficients of the difference): both parts have
+// coefficients at most 1, the edge's 1 - 9e-11 on the diagonal, so the difference's part is rank
+// one, -9.2e-11 (x - y)^2, but for rounding. Its smaller eigenvalue came out -1.65e-17 (1.35e-14
+// scaled by 1/1.2e-3, above the fixed 1e-14 floor, below an ulp of the operands) and it was taken
+// as an ellipse 1e10 long, whose points near T' were 1e-6 off the curve: no chord, and a face went
+// whole to the farther source. Given the operands' rounding, the zero set must pass within 1e-9
+// of the crossings of q = 0 with segments across it, by bisection on q itself in long double.
+TEST(Conic, RankOneDifferenceWithinItsOperandsRoundingIsNoEllipse) {
+    Quadratic2 q;
+    q.a = -9.2042595767338753e-11; q.b = 9.204257929276412e-11; q.c = -9.2042595767338753e-11;
+    q.d = -0.00089620925521105566; q.e = 0.00089620925521100014; q.f = 0.001218863009219473;
+    ConicDecomposition d;
+    decompose_conic(q, d, 8 * 0x1p-52 * 1.0);  // the operands' parts are at most 1
+    ASSERT_FALSE(d.components.empty()) << conic_type_name(d.type);
+    EXPECT_NE(d.type, ConicType::Ellipse);
+    for (double y : {0.0, 0.1, 0.25}) {
+        const Vec2 p0{y + 0.66, y}, p1{y + 0.70, y};  // either side of x - y = 0.68, near the curve
+        ASSERT_GT(q_at(q, p0.x, p0.y), 0) << y;
+        ASSERT_LT(q_at(q, p1.x, p1.y), 0) << y;
+        EXPECT_LT(distance_to_components(d, root_between(q, p0, p1)), 1e-9) << "y " << y;
+    }
+}
