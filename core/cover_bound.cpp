@@ -17,9 +17,14 @@
 //     (by vertex indices) is inside U where kept triangles lie on both its sides: each covers a
 //     half-disc of its interior points; a vertex whose edges are all inside is too. Any other edge
 //     (a boundary, a T-junction, an overlap) is tested: such cases are only left to the subdivision;
-//   - the strip of q outside K is within delta / sin(angle / 2) of K at a corner of that angle, and
-//     d is 1-Lipschitz, so the bound over q is max b_S plus that (a needle's is large: the caller's
-//     goal decides).
+//   - the strip of q outside K is within delta of K but near a corner of angle a, where K's corner
+//     lies delta / sin(a / 2) inside, and d is 1-Lipschitz: the bound over q is max b_S plus that;
+//   - at a needle's tip that is large (5e-7 of the coordinates for an angle of 3e-8), and the tip's
+//     triangle reaching past K's corner is bounded instead by convexity, max over its corners of
+//     d(., S) for the one triangle S that makes it least (tip_bound). Needle targets along a seam
+//     or a boundary of B had intervals up to 2.6e-5 of the diagonal (generate_pairs11.py
+//     "a_needles" 526; generate_pairs6.py "sliver_strip" 58197, 1.8e-7), their pieces' budget
+//     spent on tips no subdivision shrinks (delta is the coordinates', not the piece's).
 // Everything is relative to o (a corner of the target, an input point): its rounding is that of the
 // target's size and the triangles' distance from it, a few ulps of them, below delta (2^-46).
 #include "cover_bound.h"
@@ -28,6 +33,7 @@
 #include <cmath>
 #include <vector>
 
+#include "point_triangle.h"
 #include "regions.h"
 
 namespace hlens {
@@ -100,6 +106,31 @@ double along_normal(const std::vector<Vec3>& xs, const std::array<Vec3, 3>& S, c
     return std::min(by_plane, by_corners);
 }
 
+// A bound of d over the part of q within `reach` of its corner i (a needle's tip, where K's corner
+// lies `reach` inside), or HUGE_VAL: that part lies in the triangle Z of q's corner and the points
+// reach / cos(a / 2) along its edges, and d(., S) is convex, so the least over the triangles S
+// near q of the largest d(., S) at Z's corners bounds it. Past `reach` from the corner a point of
+// the strip outside K is within delta of K: its foot on K's edge lies beyond K's corner. `m`: the
+// magnitude of the triangle used (the distances' rounding).
+double tip_bound(const std::vector<uint32_t>& near, const TriangleMesh& B, const Vec3& o, const std::array<Vec3, 3>& q, int i,
+                 double reach, double& m) {
+    const Vec3 &c = q[i], &a = q[(i + 1) % 3], &b = q[(i + 2) % 3];
+    const double la = norm(a - c), lb = norm(b - c);
+    const double half_cos = 0.5 * norm((a - c) / la + (b - c) / lb);  // cos(a / 2)
+    const double r = 1.01 * reach / half_cos;  // (1.01: the directions' rounding, generously)
+    if (!(r < 0.5 * std::min(la, lb))) return HUGE_VAL;
+    const std::array<Vec3, 3> Z{c, c + (r / la) * (a - c), c + (r / lb) * (b - c)};
+    double best = HUGE_VAL;
+    for (uint32_t t : near) {
+        const auto k = B.corners(t);
+        const Vec3 S0 = k[0] - o, S1 = k[1] - o, S2 = k[2] - o;
+        double worst = 0;
+        for (const Vec3& z : Z) worst = std::max(worst, std::sqrt(closest_point_on_triangle(z, S0, S1, S2).dist2));
+        if (worst < best) best = worst, m = std::max({norm(S0), norm(S1), norm(S2)});
+    }
+    return best;
+}
+
 }  // namespace
 
 double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack) {
@@ -169,9 +200,15 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
 
     const double delta = 0x1p-46 * M;  // 16 times the projected corners' rounding
     const std::array<Vec2, 3> m = inward(pq);
+    // A point of K in U: the centroid, or halfway from it to a corner (a needle along a seam of U
+    // has its centroid on the seam, in no triangle for certain).
     const Vec2 centre = (pq[0] + pq[1] + pq[2]) / 3.0;
-    if (!inside(centre, pq, delta) || std::none_of(kept.begin(), kept.end(), [&](const auto& ps) { return inside(centre, ps, delta); }))
-        return HUGE_VAL;
+    bool in_u = false;
+    for (int i = -1; i < 3 && !in_u; ++i) {
+        const Vec2 x = i < 0 ? centre : 0.5 * (centre + pq[i]);
+        in_u = inside(x, pq, delta) && std::any_of(kept.begin(), kept.end(), [&](const auto& ps) { return inside(x, ps, delta); });
+    }
+    if (!in_u) return HUGE_VAL;
     std::sort(sides.begin(), sides.end());
     for (size_t i = 0, j; i < sides.size(); i = j) {
         bool left = false, right = false;
@@ -181,16 +218,26 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
         for (size_t k = i; k < j; ++k)
             if (meets(sides[k].pa, sides[k].pb, pq, m, delta)) return HUGE_VAL;
     }
-    // The strip outside K: at corner i (angle a), K's corner lies delta / sin(a / 2) inside.
-    double strip = 0;
+    // The strip outside K: at corner i (angle a), K's corner lies delta / sin(a / 2) inside, and
+    // elsewhere a point of the strip is within delta of K. A needle's tip is bounded instead.
+    double strip = delta, tips = -HUGE_VAL, tip_m = 0;
     for (int i = 0; i < 3; ++i) {
         const Vec2 u = (pq[(i + 1) % 3] - pq[i]) / norm(pq[(i + 1) % 3] - pq[i]), w = (pq[(i + 2) % 3] - pq[i]) / norm(pq[(i + 2) % 3] - pq[i]);
-        const double half_sine = std::sqrt(std::max(0.0, 0.5 * (1 - dot(u, w))));
+        const double half_sine = 0.5 * norm(u - w);  // sin(a / 2), also where cos(a) rounds to 1
         if (!(half_sine > 0)) return HUGE_VAL;
-        strip = std::max(strip, delta / half_sine);
+        const double at_corner = delta / half_sine;
+        if (at_corner > 2 * delta) {
+            double m_tip = 0;
+            const double tip = tip_bound(near, B, o, q, i, at_corner, m_tip);
+            if (tip < bound + at_corner) {
+                tips = std::max(tips, tip), tip_m = std::max(tip_m, m_tip);
+                continue;
+            }
+        }
+        strip = std::max(strip, at_corner);
     }
-    slack = 256 * 0x1p-52 * (bound + 2 * M);
-    return bound + strip;
+    slack = 256 * 0x1p-52 * (std::max(bound, tips) + 2 * std::max(M, tip_m));
+    return std::max(bound + strip, tips);
 }
 
 }  // namespace hlens

@@ -113,3 +113,64 @@ TEST(CoverBound, NeverBelowTheDistanceAnywhereOnTheTriangle) {
     }
     EXPECT_GE(bounded, 30) << "too few triangles bounded for the test to mean much";
 }
+
+// A needle at height h over the fan, along the edge from vertex 0 to vertex 100 (the x axis) or
+// beside it. Its line along the normal meets z = 0 within the disc everywhere, so d <= h; the
+// bound is h but for rounding. The union's cover is only certain on the needle shrunk by its
+// rounding, whose tip lies that over sin(angle / 2) inside (5e-7 here): the tip is bounded by the
+// one source nearest it instead (by convexity), at most h plus the needle's width there.
+TEST(CoverBound, ANeedleOverAFanIsBoundedByItsHeightToTheTip) {
+    const TriangleMesh B = rim_fan(200);
+    const MeshGrid g(B);
+    const double h = 0.002;
+    for (double y : {0.0, 0.013})
+        for (double w : {1e-8, 1e-11}) {
+            const std::array<Vec3, 3> q{Vec3{-0.3, y, h}, Vec3{0.3, y + w, h}, Vec3{0.3, y - w, h}};
+            const double b = bound_of(g, q);
+            EXPECT_GE(b, h) << y << " " << w;
+            EXPECT_LE(b, h + 1e-12) << y << " " << w;
+        }
+}
+
+// Soundness of the tips' bound against brute force: needles (widths 1e-6 to 1e-11) over the lifted
+// fans of NeverBelowTheDistanceAnywhereOnTheTriangle: at random, along a spoke (an edge from vertex
+// 0: the tip lies on the seam between two sources), or over a flat fan 1e-7 below with the tip past
+// the rim by up to 1e-7 (where the union does not reach and only the tip's own bound holds it);
+// wherever a bound is given, no point of the needle (the tip and a dense grid of barycentric
+// samples) is farther from the fan than it.
+TEST(CoverBound, NeedlesAreNeverBoundedBelowTheDistance) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> U(-1, 1);
+    int bounded[3] = {0, 0, 0};
+    for (int trial = 0; trial < 150; ++trial) {
+        const int kind = trial % 3;
+        TriangleMesh B = rim_fan(12 + trial / 2);
+        if (kind < 2)
+            for (Vec3& p : B.positions) p.z = 0.01 * U(rng);
+        const MeshGrid g(B);
+        Vec3 tip{0.5 * U(rng), 0.5 * U(rng), 0.02 + 0.01 * U(rng)}, dir{U(rng), U(rng), 0};
+        if (kind == 1) {  // along the spoke from vertex 0 to rim vertex k
+            const Vec3 k = B.positions[1 + (trial * 7) % (B.positions.size() - 1)];
+            tip = B.positions[0] + (0.3 + 0.2 * U(rng)) * (k - B.positions[0]) + Vec3{0, 0, tip.z};
+            dir = k - B.positions[0];
+        } else if (kind == 2) {  // past the rim's edge from vertex k to k + 1, pointing inwards
+            const size_t k = 1 + trial % (B.positions.size() - 2);
+            const Vec3 a = B.positions[k], b = B.positions[k + 1], m = a + (0.5 + 0.4 * U(rng)) * (b - a);
+            tip = m + std::pow(10.0, -9 - 2 * U(rng)) * m / norm(m) + Vec3{0, 0, 1e-7};
+            dir = -1.0 * m + Vec3{0.3 * U(rng), 0.3 * U(rng), 0};
+        }
+        dir = dir / norm(dir);
+        const Vec3 side{-dir.y, dir.x, 0};
+        const double len = 0.2 + 0.1 * U(rng), w = std::pow(10.0, -8.5 + 2.5 * U(rng));
+        const std::array<Vec3, 3> q{tip, tip + len * dir + w * side + Vec3{0, 0, 0.5 * w * U(rng)}, tip + len * dir - w * side};
+        const double b = bound_of(g, q);
+        if (!(b < HUGE_VAL)) continue;
+        ++bounded[kind];
+        double truth = 0;
+        for (int i = 0; i <= 400; ++i)
+            for (int j = 0; i + j <= 400; j += 20)
+                truth = std::max(truth, brute_distance(q[0] + (i / 400.0) * (q[1] - q[0]) + (j / 400.0) * (q[2] - q[0]), B));
+        EXPECT_GE(b, truth) << "trial " << trial << " kind " << kind;
+    }
+    for (int kind = 0; kind < 3; ++kind) EXPECT_GE(bounded[kind], 10) << "kind " << kind << ": too few needles bounded for the test to mean much";
+}
