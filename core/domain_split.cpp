@@ -1390,11 +1390,19 @@ bool DomainMesh::boundary_hugs_chord(int f, const Chord& c, double tol) const {
     Vec2 poly[17];  // a closed curve's chord as a polyline: its other part may pass near the path
     if (c.comp.closed())
         for (int k = 0; k <= 16; ++k) poly[k] = c.comp.at(c.t0 + (c.t1 - c.t0) * k / 16);
+    // Near the chord's own piece; or, as for an open curve, on the curve past the piece's ends,
+    // within 0.01 of the ellipse's parameter of them (not on its other side, nor where a thin
+    // ellipse's sides part by more than 1% of its width): a boundary that overshoots an end along
+    // the curve. (Generate_pairs7.py "prism_axis_needle" 7956, side B, target 0: an ellipse 0.1
+    // across passing 1e-9 over boundary arcs that ran 1.1e-6 past the chord's end along it; the
+    // chord was kept, ran into the face's hole beside them, and the face stayed whole with the
+    // farther source, a step of d^2 7e-7.)
     auto near_curve = [&](Vec2 p) {
         if (!c.comp.closed()) return off_component(c.comp, p) <= tol;
         for (int k = 0; k < 16; ++k)
             if (segment_distance(p, poly[k], poly[k + 1]) <= tol) return true;
-        return false;
+        const double t = c.comp.param_of(p), past = wrap2pi(t - c.t0);
+        return norm(c.comp.at(t) - p) <= tol && (past <= c.t1 - c.t0 + 0.01 || past >= kTwoPi - 0.01);
     };
     for (int start : faces_[f].loops) {
         int ha = -1, hb = -1, h = start, guard = 0;
