@@ -6,7 +6,9 @@
 // for more seeds, e.g.
 // `build/bin/hlens_check_pairs 0 28000`. DUMP=prefix writes each pair as prefix_a.obj and prefix_b.obj.
 // Usage: hlens_check_pairs SEED_FROM SEED_TO [KIND_FILTER] [--no-fork] [--verbose] [--every-target]
-//        [--thorough] (--every-target with validate(true) after every insertion)
+//        [--thorough] (--every-target with validate(true) after every insertion) [--max-width REL]
+//        (check 6 on every pair: the certified interval at most REL of the diagonal; without it,
+//        1e-9 on near-coincident pairs far from the origin only)
 //        hlens_check_pairs --pairs DIR [...]: every DIR/NAME_a.obj, DIR/NAME_b.obj (another
 //        generator's pairs, e.g. generate_pairs.py), numbered in name order as "seed"
 //   kind of seed = kinds[seed % NKINDS]; the RNG is std::mt19937(seed).
@@ -712,6 +714,7 @@ static double max_coord(const Pair& P) {
 // polynomials against brute force, d^2 continuous across edges): the transient states that checks
 // 1 and 2 see on three targets only (generate_pairs4.py "quantized" 19453: target 10 of 48).
 static bool g_every_target = false, g_thorough = false;
+static double g_max_width = 0;  // --max-width REL: check 6 on every pair, the interval at most REL of the diagonal
 static void check_every_target(Ctx& C, const VoxelGrid& grid) {
     for (int side = 0; side < 2; ++side)
         for (uint32_t t = 0; t < grid.mesh(side).num_triangles(); ++t)
@@ -826,9 +829,10 @@ static void run_pair(unsigned seed, const Pair& P, bool verbose, long budget) {
                         " up_minus_ownLB=%.3Lg ownUB_minus_low=%.3Lg own_gap=%.3Lg budget=%d slack=%.3g\n", seed, P.kind.c_str(), dn, w, diag,
                         diag > 0 ? w / diag : 0.0, mc, mc > 0 ? w / (mc * 2.220446049250313e-16) : 0.0, p.distance,
                         (LD)p.upper - b.lb, b.ub - (LD)p.lower, b.ub - b.lb, (int)b.budget_hit, slack);
-            if (P.near_coincident_far && w > 1e-9 * diag)
-                C.fail("6_width", fmt("%s width %.3g > 1e-9*diag = %.3g (lower %.17g upper %.17g distance %.17g; diag %.3g, maxcoord %.3g, width = %.3g ulps of maxcoord)", dn, w,
-                                      1e-9 * diag, p.lower, p.upper, p.distance, diag, mc, w / (mc * 2.220446049250313e-16)));
+            const double max_width = g_max_width > 0 ? g_max_width : P.near_coincident_far ? 1e-9 : HUGE_VAL;
+            if (w > max_width * diag)
+                C.fail("6_width", fmt("%s width %.3g > %.3g*diag = %.3g (lower %.17g upper %.17g distance %.17g; diag %.3g, maxcoord %.3g, width = %.3g ulps of maxcoord)", dn, w,
+                                      max_width, max_width * diag, p.lower, p.upper, p.distance, diag, mc, w / (mc * 2.220446049250313e-16)));
         }
     }
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -866,7 +870,7 @@ static std::vector<std::string> pair_names(const std::string& dir) {
 
 int main(int argc, char** argv) {
     if (argc < 3) {
-        std::fprintf(stderr, "usage: %s SEED_FROM SEED_TO [KIND] [--no-fork] [--verbose] [--budget N] [--timeout S] [--every-target] [--thorough]\n"
+        std::fprintf(stderr, "usage: %s SEED_FROM SEED_TO [KIND] [--no-fork] [--verbose] [--budget N] [--timeout S] [--every-target] [--thorough] [--max-width REL]\n"
                              "       %s --pairs DIR [same options]  (DIR/NAME_a.obj, DIR/NAME_b.obj)\n kinds:", argv[0], argv[0]);
         for (int i = 0; i < NKINDS; ++i) std::fprintf(stderr, " %s", kKinds[i]);
         std::fprintf(stderr, "\n");
@@ -889,6 +893,7 @@ int main(int argc, char** argv) {
         else if (a == "--timeout" && i + 1 < argc) timeout = std::atoi(argv[++i]);
         else if (a == "--every-target") g_every_target = true;
         else if (a == "--thorough") g_every_target = g_thorough = true;
+        else if (a == "--max-width" && i + 1 < argc) g_max_width = std::atof(argv[++i]);
         else filter = a;
     }
     for (unsigned seed = from; seed < to; ++seed) {
