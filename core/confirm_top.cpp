@@ -19,8 +19,8 @@
 //     the plane through T's edge the corner lies beyond (overlapping triangulations). A piece
 //     still above the goal is cut again, up to kCuts deep (a fan of triangles round a vertex).
 // A sub-triangle whose bound is at most the largest distance measured so far, plus `tol`, is done;
-// the others are split in four until their radius is below `tol`, and the largest bound of those
-// done bounds the result.
+// the others are split in four (a thin one in two, across its longest edge: children) until their
+// radius is below `tol`, and the largest bound of those done bounds the result.
 // A centre farther than the result is a point the domain mesh missed: the result is raised to it
 // and polished by a local search, so the answer is the largest distance actually measured.
 // Without the cuts, a seam where d is flat or has a crease needed splitting down to `tol` along

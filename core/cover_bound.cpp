@@ -24,7 +24,9 @@
 //     d(., S) for the one triangle S that makes it least (tip_bound). Needle targets along a seam
 //     or a boundary of B had intervals up to 2.6e-5 of the diagonal (generate_pairs11.py
 //     "a_needles" 526; generate_pairs6.py "sliver_strip" 58197, 1.8e-7), their pieces' budget
-//     spent on tips no subdivision shrinks (delta is the coordinates', not the piece's).
+//     spent on tips no subdivision shrinks (delta is the coordinates', not the piece's);
+//   - a piece too thin for its own normal (a segment, where a degenerate target's corners
+//     coincide) is seen along a well-shaped neighbour's normal instead (thin_cover_bound).
 // Everything is relative to o (a corner of the target, an input point): its rounding is that of the
 // target's size and the triangles' distance from it, a few ulps of them, below delta (2^-46).
 #include "cover_bound.h"
@@ -131,16 +133,86 @@ double tip_bound(const std::vector<uint32_t>& near, const TriangleMesh& B, const
     return best;
 }
 
+double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, Vec3 n, double goal, double& slack);
+
+// q too thin for its own normal (a segment where a degenerate target's corners coincide, or a
+// needle whose normal's rounding, over its length, reaches the goal): bounded over the triangle
+// on its longest edge ab, 1e-4 of ab's length wide to one side or the other, seen along the normal
+// of the best-shaped triangle of B not steep to ab among those nearest ab's middle (within 1e-3 of
+// ab's length of the nearest; a sliver's normal is as uncertain as q's, and seen along it every
+// source's distance would be), plus the third corner's distance from ab: every point of q lies
+// within that of ab, which that triangle contains. (Generate_pairs6.py "sliver_strip" 58161:
+// segment targets 24 long across a fan of slivers, their intervals 2.9e-9 of the diagonal.)
+double thin_cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack) {
+    int i = 0;
+    for (int k = 1; k < 3; ++k)
+        if (norm(q[(k + 1) % 3] - q[k]) > norm(q[(i + 1) % 3] - q[i])) i = k;
+    const Vec3 &a = q[i], &b = q[(i + 1) % 3], &c = q[(i + 2) % 3];
+    const double l = norm(b - a);
+    if (!(l > 0)) return HUGE_VAL;
+    const Vec3 e = (b - a) / l, mid = 0.5 * (a + b);
+    const double off = norm((c - a) - dot(c - a, e) * e);
+    std::vector<std::pair<double, Vec3>> cands;  // (distance from ab's middle, unit normal times shape)
+    double nearest = HUGE_VAL;
+    for (size_t v : g.voxels_of_triangle({o + a, o + b, o + c}))
+        for (auto it = g.begin(v); it != g.end(v); ++it) {
+            const auto k = g.mesh().corners(*it);
+            const std::array<Vec3, 3> S{k[0] - o, k[1] - o, k[2] - o};
+            const Vec3 n = cross(S[1] - S[0], S[2] - S[0]);
+            const double ln = norm(n);
+            if (!(ln > 0) || !(std::fabs(dot(n, e)) <= 0.5 * ln)) continue;
+            const double d = std::sqrt(closest_point_on_triangle(mid, S[0], S[1], S[2]).dist2);
+            cands.push_back({d, n / (norm(S[1] - S[0]) * norm(S[2] - S[0]))});
+            nearest = std::min(nearest, d);
+        }
+    Vec3 ns;
+    double best = 0;
+    for (const auto& [d, n] : cands)
+        if (d <= nearest + 1e-3 * l && norm(n) > best) best = norm(n), ns = n / best;
+    if (!(best > 0)) return HUGE_VAL;
+    const Vec3 w = cross(ns, e) / norm(cross(ns, e));
+    double bound = HUGE_VAL;
+    for (double side : {1.0, -1.0}) {
+        double s = 0;
+        const double b1 = cover_bound_of(g, o, {a, b, mid + (side * 1e-4 * l) * w}, ns, goal, s);
+        if (b1 < bound) bound = b1, slack = s;
+        if (bound <= goal) break;
+    }
+    return bound + off;
+}
+
 }  // namespace
 
 double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack) {
-    const TriangleMesh& B = g.mesh();
     const Vec3 nq = cross(q[1] - q[0], q[2] - q[0]);
-    const double lq = norm(nq), l1 = norm(q[1] - q[0]);
-    if (!(lq > 0 && l1 > 0)) return HUGE_VAL;
-    const Vec3 n = nq / lq, e1 = (q[1] - q[0]) / l1, e2 = cross(n, e1);
+    const double la = norm(q[1] - q[0]), lb = norm(q[2] - q[0]), lq = norm(nq);
+    double bound = lq > 0 ? cover_bound_of(g, o, q, nq / lq, goal, slack) : HUGE_VAL;
+    // Seen along a normal whose rounding (an angle, as along_normal's) over q's length reaches the
+    // goal, the sources' distances along it are that uncertain: the thin bound may do better.
+    if (bound <= goal || 16 * 0x1p-52 * la * lb * std::max({la, lb, norm(q[2] - q[1])}) <= 1e-3 * goal * lq) return bound;
+    double thin_slack = 0;
+    const double thin = thin_cover_bound(g, o, q, goal, thin_slack);
+    if (thin < bound) bound = thin, slack = thin_slack;
+    return bound;
+}
+
+namespace {
+
+// q seen along the unit vector n (its normal, or thin_cover_bound's): the bound is taken over the
+// plane through q[0] normal to n, each point of q lying on the line along n of its projection
+// there, within `tilt` of it (0 but for rounding where n is q's normal).
+double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, Vec3 n, double goal, double& slack) {
+    const TriangleMesh& B = g.mesh();
+    Vec3 e1 = (q[1] - q[0]) - dot(q[1] - q[0], n) * n;
+    const double l1 = norm(e1);
+    if (!(l1 > 0)) return HUGE_VAL;
+    e1 = e1 / l1;
+    Vec3 e2 = cross(n, e1);
+    if (dot(cross(q[1] - q[0], q[2] - q[0]), n) < 0) n = -1.0 * n, e2 = -1.0 * e2;  // q counter-clockwise seen along n
+    const double tilt = std::max(std::fabs(dot(q[1] - q[0], n)), std::fabs(dot(q[2] - q[0], n)));
     auto P = [&](const Vec3& x) { return Vec2{dot(x, e1), dot(x, e2)}; };
-    const std::array<Vec2, 3> pq{P(q[0]), P(q[1]), P(q[2])};  // counter-clockwise: n is q's normal
+    const std::array<Vec2, 3> pq{P(q[0]), P(q[1]), P(q[2])};
+    if (!(cross(pq[1] - pq[0], pq[2] - pq[0]) > 0)) return HUGE_VAL;
     Vec2 lo = pq[0], hi = pq[0];
     for (const Vec2& p : pq) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
     double M = std::max({norm(q[0]), norm(q[1]), norm(q[2])});
@@ -237,7 +309,9 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
         strip = std::max(strip, at_corner);
     }
     slack = 256 * 0x1p-52 * (std::max(bound, tips) + 2 * std::max(M, tip_m));
-    return std::max(bound + strip, tips);
+    return std::max(bound + strip, tips) + tilt;
 }
+
+}  // namespace
 
 }  // namespace hlens

@@ -132,7 +132,24 @@ TEST(CoverBound, ANeedleOverAFanIsBoundedByItsHeightToTheTip) {
         }
 }
 
-// Soundness of the tips' bound against brute force: needles (widths 1e-6 to 1e-11) over the lifted
+// A segment (a degenerate target's piece: two corners the same point) and a needle 1e-13 wide,
+// whose normal's rounding is 0.03, at height h over the fan: seen along the plane of the fan's
+// best-shaped triangle near them, a triangle 1e-4 wide on the segment is covered, and the bound is
+// h but for rounding (and, for the needle, its width).
+TEST(CoverBound, ASegmentOverAFanIsBoundedByItsHeight) {
+    const TriangleMesh B = rim_fan(200);
+    const MeshGrid g(B);
+    const double h = 0.002;
+    for (double w : {0.0, 1e-13}) {
+        const std::array<Vec3, 3> q{Vec3{-0.3, 0.013, h}, Vec3{0.3, 0.013 + w, h}, Vec3{0.3, 0.013, h}};
+        const double b = bound_of(g, q);
+        EXPECT_GE(b, h) << w;
+        EXPECT_LE(b, h + 1e-12) << w;
+    }
+}
+
+// Soundness of the tips' and thin pieces' bounds against brute force: needles (widths 1e-6 to 1e-11,
+// 1e-13, or 0: segments) over the lifted
 // fans of NeverBelowTheDistanceAnywhereOnTheTriangle: at random, along a spoke (an edge from vertex
 // 0: the tip lies on the seam between two sources), or over a flat fan 1e-7 below with the tip past
 // the rim by up to 1e-7 (where the union does not reach and only the tip's own bound holds it);
@@ -161,7 +178,9 @@ TEST(CoverBound, NeedlesAreNeverBoundedBelowTheDistance) {
         }
         dir = dir / norm(dir);
         const Vec3 side{-dir.y, dir.x, 0};
-        const double len = 0.2 + 0.1 * U(rng), w = std::pow(10.0, -8.5 + 2.5 * U(rng));
+        // Every fifth a segment (two corners the same point) or a needle 1e-13 wide: no normal of
+        // its own to be seen along (thin_cover_bound).
+        const double len = 0.2 + 0.1 * U(rng), w = trial % 5 == 4 ? (trial % 10 == 4 ? 0.0 : 1e-13) : std::pow(10.0, -8.5 + 2.5 * U(rng));
         const std::array<Vec3, 3> q{tip, tip + len * dir + w * side + Vec3{0, 0, 0.5 * w * U(rng)}, tip + len * dir - w * side};
         const double b = bound_of(g, q);
         if (!(b < HUGE_VAL)) continue;
