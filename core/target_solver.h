@@ -214,6 +214,7 @@ private:
     bool stopped_early_ = false;
     std::vector<Candidate> candidates_;
     SourceProjection projection_;     // the source being inserted (its storage reused)
+    std::vector<SourceProjection> degenerate_projections_;  // a target with no domain mesh: each inserted source's
     // run() unwatched: found sources by (lower bound of d^2, centroid distance less reach), a min-heap.
     struct Near {
         double lb, key;
