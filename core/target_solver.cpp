@@ -408,34 +408,65 @@ void TargetSolver::update_maximum() {
     }
 }
 
+namespace {
+
+// A source's region along the segment A + t D, t in [0, 1]: its interval, the source's d^2 there
+// as a polynomial in t, that polynomial's rounding on [0, 1] (slop, generously) and an upper bound
+// of it over the interval (top: the chord's larger end, plus how far a concave part rises above it;
+// d^2 along a line is convex but for rounding).
+struct SegmentPiece { double lo, hi; Poly q; uint32_t s; double slop, top; };
+
+void pieces_along(Vec2 A, Vec2 D, const std::vector<uint32_t>& sources, const std::vector<SourceProjection>& projections,
+                  std::vector<SegmentPiece>& out) {
+    RationalCurve line;
+    line.n0 = A; line.n1 = D;
+    out.clear();
+    for (size_t i = 0; i < sources.size(); ++i)
+        for (const SourceRegion& r : projections[i].regions) {
+            double lo = 0, hi = 1;
+            bool empty = false;
+            for (const HalfPlane& h : r.planes) {
+                if (h.kind == HalfPlane::All) continue;
+                if (h.kind == HalfPlane::None) { empty = true; break; }
+                double a = dot(h.n, D), b = h.offset - dot(h.n, A);  // inside: t a >= b
+                if (a > 0) lo = std::max(lo, b / a);
+                else if (a < 0) hi = std::min(hi, b / a);
+                else if (b > 0) empty = true;
+            }
+            if (empty || lo > hi) continue;
+            SegmentPiece pc{lo, hi, line.compose(r.poly), sources[i], 0, HUGE_VAL};
+            for (int d = 0; d <= pc.q.deg; ++d) pc.slop += 1e-12 * std::fabs(pc.q.c[d]);
+            if (pc.q.deg <= 2)
+                pc.top = std::max(pc.q(lo), pc.q(hi)) + std::max(0.0, -pc.q.c[2]) * (hi - lo) * (hi - lo) / 4 + pc.slop;
+            out.push_back(pc);
+        }
+}
+
+}  // namespace
+
 // A target with (nearly) no area is handled as its three edges: along a segment d^2 is the lower
 // envelope of convex pieces, whose maximum lies at a piece end or where two pieces cross. Such
 // points are evaluated directly, highest bound first: d^2 at a point of piece p is at most p's
-// quadratic there (its source's d^2), so once that bound is below the best value found, no other
-// point can beat it; and two pieces cross above it only if both rise above it on their overlap
-// (a convex quadratic's largest value on an interval is at an end); and a point's distances stop as
-// soon as one is no higher than the best (each source projected once, when inserted). Evaluated
-// in full, every point
-// against every source after every insertion, a target 9 away from 94 slivers took 1.4 s, and fast
-// mode solved three such targets in 2,052 pieces (generate_pairs11.py "slivers_strip" 1023: 122 s).
-// The interior of a sliver is within its height of an edge, so the result is short of the true
-// maximum by at most that height (reported as slack()).
+// quadratic there (its source's d^2), so once no bound is above the best value found, no other
+// point can beat it; two pieces cross above it only if both rise above it on their overlap; and a
+// point's distances stop as soon as one is no higher than the best. (Every point against every
+// source after every insertion, each source projected again each time, a target 9 away from 94
+// slivers took 1.4 s, and fast mode solved three such targets in 2,052 pieces: generate_pairs11.py
+// "slivers_strip" 1023, 122 s.) The interior of a sliver is within its height of an edge, so the
+// result is short of the true maximum by at most that height (reported as slack()).
 void TargetSolver::degenerate_maximum() {
+    assert(degenerate_projections_.size() == inserted_.size());
     double best = -HUGE_VAL;
-    struct Piece { double lo, hi; Poly q; uint32_t s; double slop, top; };
     struct Candidate { double bound, t; };
-    std::vector<Piece> pieces;
     std::vector<Candidate> cands;
+    std::vector<SegmentPiece> pieces;
     for (int k = 0; k < 3; ++k) {
-        Vec2 A = frame_.corners[k], D = frame_.corners[(k + 1) % 3] - A;
-        RationalCurve line;
-        line.n0 = A; line.n1 = D;
-        // Highest bound first, until no bound is above the best value found.
-        auto evaluate = [&] {
+        const Vec2 A = frame_.corners[k], D = frame_.corners[(k + 1) % 3] - A;
+        auto evaluate = [&] {  // highest bound first, until no bound is above the best value found
             std::sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.bound > y.bound; });
             for (const Candidate& c : cands) {
                 if (!(c.bound > best)) break;
-                Vec2 p = A + std::min(1.0, std::max(0.0, c.t)) * D;
+                const Vec2 p = A + std::min(1.0, std::max(0.0, c.t)) * D;
                 double v = HUGE_VAL;  // direct_d2(p), left as soon as it is no longer above best
                 for (uint32_t s : inserted_)
                     if (!((v = std::min(v, source_distance2(frame_, source_corners(s), p))) > best)) break;
@@ -443,37 +474,16 @@ void TargetSolver::degenerate_maximum() {
             }
             cands.clear();
         };
-        pieces.clear();
+        pieces_along(A, D, inserted_, degenerate_projections_, pieces);
         cands.assign({{HUGE_VAL, 0.0}, {HUGE_VAL, 1.0}});
-        assert(degenerate_projections_.size() == inserted_.size());
-        for (size_t i = 0; i < inserted_.size(); ++i) {
-            const uint32_t s = inserted_[i];
-            for (const SourceRegion& r : degenerate_projections_[i].regions) {
-                double lo = 0, hi = 1;
-                bool empty = false;
-                for (const HalfPlane& h : r.planes) {
-                    if (h.kind == HalfPlane::All) continue;
-                    if (h.kind == HalfPlane::None) { empty = true; break; }
-                    double a = dot(h.n, D), b = h.offset - dot(h.n, A);  // inside: t a >= b
-                    if (a > 0) lo = std::max(lo, b / a);
-                    else if (a < 0) hi = std::min(hi, b / a);
-                    else if (b > 0) empty = true;
-                }
-                if (empty || lo > hi) continue;
-                Piece pc{lo, hi, line.compose(r.poly), s, 0, HUGE_VAL};
-                for (int i = 0; i <= pc.q.deg; ++i) pc.slop += std::fabs(pc.q.c[i]);
-                pc.slop *= 1e-12;  // the evaluation's rounding on [0, 1], generously
-                if (pc.q.deg <= 2)  // the chord's largest value, plus how far a concave part rises above it
-                    pc.top = std::max(pc.q(lo), pc.q(hi)) + std::max(0.0, -pc.q.c[2]) * (hi - lo) * (hi - lo) / 4 + pc.slop;
-                cands.push_back({pc.q(lo) + pc.slop, lo});
-                cands.push_back({pc.q(hi) + pc.slop, hi});
-                pieces.push_back(pc);
-            }
+        for (const SegmentPiece& pc : pieces) {
+            cands.push_back({pc.q(pc.lo) + pc.slop, pc.lo});
+            cands.push_back({pc.q(pc.hi) + pc.slop, pc.hi});
         }
         evaluate();
         for (size_t i = 0; i < pieces.size(); ++i)
             for (size_t j = i + 1; j < pieces.size(); ++j) {
-                const Piece &p = pieces[i], &q = pieces[j];
+                const SegmentPiece &p = pieces[i], &q = pieces[j];
                 if (p.s == q.s || !(std::min(p.top, q.top) > best)) continue;
                 double lo = std::max(p.lo, q.lo), hi = std::min(p.hi, q.hi);
                 if (lo > hi) continue;
