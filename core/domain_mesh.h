@@ -233,7 +233,6 @@ private:
         std::vector<double> areas, vval;
         std::vector<int> degree, any_out;
         ConicDecomposition dec;
-        double l2_rounding = 0;  // split_face_into's g's (decompose_conic's), 0 where unknown
         std::vector<Vec2> clipped, clip_tmp;
         std::vector<Chord> chords, cand, hole_cands;
         std::vector<SplitPiece> line_first, line_second;  // split_by_line_pair
@@ -275,7 +274,7 @@ private:
     // `quad`: where g is a difference of two quadratics, the larger of their quadratic parts'
     // quad_scale(): g's part is exact only to an ulp of it.
     void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out, double quad = 0);
-    bool split_by_line_pair(int f, const Quadratic2& g, std::vector<SplitPiece>& out);
+    bool split_by_line_pair(int f, const Quadratic2& g, double l2_rounding, std::vector<SplitPiece>& out);
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);

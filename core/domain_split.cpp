@@ -392,6 +392,7 @@ struct DomainMesh::SplitCall {
     bool line_like = false;   // the curve is one line or two
     int centre = -1;          // a line pair's centre: the vertex on both lines (add_line_pair_centre)
     int pinches = 0;          // pairs of vertices made one where the face is pinched (pinch_face)
+    double l2_rounding = 0;   // the rounding of g's smaller eigenvalue, for decompose_conic (0: unknown)
 
     SplitCall(int face, const Quadratic2& g_unit, bool linear, DomainMesh::Scratch& scratch)
         : f(face), g(g_unit), g_linear(linear), tmp(scratch) {
@@ -456,7 +457,7 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
     if (!(gs > 0)) { out.push_back({f, 0}); return; }
     Quadratic2 g = g_in * (1.0 / gs);
     // Each of a, b, c a few ulps of `quad` off: the smaller eigenvalue by up to about twice that.
-    tmp_.l2_rounding = 8 * 0x1p-52 * quad / gs;
+    const double l2_rounding = 8 * 0x1p-52 * quad / gs;
     {
         // Most faces lie wholly on one side: a conservative bound over the face's box says so.
         Box2 b = cached_face_box(f);
@@ -483,9 +484,9 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         if (r.lo > kZero) { out.push_back({f, 1}); return; }
         if (r.hi < -kZero) { out.push_back({f, -1}); return; }
     }
-    if (!g_in.is_linear() && split_by_line_pair(f, g, out)) return;
-    tmp_.l2_rounding = 8 * 0x1p-52 * quad / gs;  // (split_by_line_pair's cuts may have reset it)
+    if (!g_in.is_linear() && split_by_line_pair(f, g, l2_rounding, out)) return;
     SplitCall s(f, g, g_in.is_linear(), tmp_);
+    s.l2_rounding = l2_rounding;
     split_boundary_where_g_changes_sign(s);  // 1.
     classify_by_side(s);                     // 2.
     find_chords(s);                          // 3.
@@ -505,10 +506,10 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
 // their hooks ambiguous (generate_pairs5.py "pow2_coords" 1147, side A, target 7, the paper's
 // order: two planes' line pair crossing at such a cluster, the face linked into one loop along
 // both lines' sides, and a quadrant where the nearer plane's d^2 is 2.7e-9 kept 7.3e-7).
-bool DomainMesh::split_by_line_pair(int f, const Quadratic2& g, std::vector<SplitPiece>& out) {
+bool DomainMesh::split_by_line_pair(int f, const Quadratic2& g, double l2_rounding, std::vector<SplitPiece>& out) {
     if (!(g.a * g.c - g.b * g.b < 0)) return false;
     ConicDecomposition& dec = tmp_.dec;
-    decompose_conic(g, dec, tmp_.l2_rounding);
+    decompose_conic(g, dec, l2_rounding);
     if (dec.type != ConicType::LinePair || dec.components.size() != 2) return false;
     const CurveComponent l1 = dec.components[0], l2 = dec.components[1];
     Vec2 m;
@@ -666,7 +667,7 @@ bool DomainMesh::at_centre(const Quadratic2& g, Vec2 p) {
 // g = 0 is a line pair as decompose_conic has it (its value at the centre within that centre's
 // rounding), which is how find_chords will draw it.
 bool DomainMesh::line_pair(SplitCall& s) {
-    decompose_conic(s.g, tmp_.dec, tmp_.l2_rounding);
+    decompose_conic(s.g, tmp_.dec, s.l2_rounding);
     return tmp_.dec.type == ConicType::LinePair;
 }
 
@@ -703,7 +704,7 @@ bool DomainMesh::split_arc_on_the_curve(SplitCall& s, int e) {
     for (const Vec2 p : {a, b})
         if (!(std::fabs(g(p)) <= kOnCurve * norm(g.gradient(p)))) return false;
     ConicDecomposition& dec = tmp_.dec;  // (find_chords decomposes g again)
-    decompose_conic(g, dec, tmp_.l2_rounding);
+    decompose_conic(g, dec, s.l2_rounding);
     if (dec.type != ConicType::LinePair || dec.components.size() != 2) return false;
     bool along = false;
     for (const CurveComponent& line : dec.components)
@@ -800,7 +801,7 @@ void DomainMesh::find_chords(SplitCall& s) {
         if (s.is_zero(v) && std::find(zverts.begin(), zverts.end(), v) == zverts.end()) zverts.push_back(v);
     }
     ConicDecomposition& dec = tmp_.dec;
-    decompose_conic(s.g, dec, tmp_.l2_rounding);
+    decompose_conic(s.g, dec, s.l2_rounding);
     if (dec.type == ConicType::Hyperbola) hyperbola_as_line_pair(s.g, dec);
     if (dec.type == ConicType::LinePair && dec.components.size() == 2) add_line_pair_centre(s);
     s.line_like = dec.type == ConicType::Line || dec.type == ConicType::ParallelLines || dec.type == ConicType::LinePair;
