@@ -467,9 +467,7 @@ void TargetSolver::degenerate_maximum() {
             for (const Candidate& c : cands) {
                 if (!(c.bound > best)) break;
                 const Vec2 p = A + std::min(1.0, std::max(0.0, c.t)) * D;
-                double v = HUGE_VAL;  // direct_d2(p), left as soon as it is no longer above best
-                for (uint32_t s : inserted_)
-                    if (!((v = std::min(v, source_distance2(frame_, source_corners(s), p))) > best)) break;
+                const double v = direct_d2(p, best);
                 if (v > best) { best = v; max_2d_ = p; }
             }
             cands.clear();
@@ -530,9 +528,10 @@ double TargetSolver::rounding_sq() const {
     return 64 * 0x1p-52 * frame_.scale * frame_.scale * w * w;
 }
 
-double TargetSolver::direct_d2(Vec2 p) const {
+double TargetSolver::direct_d2(Vec2 p, double floor) const {
     double best = HUGE_VAL;
-    for (uint32_t s : inserted_) best = std::min(best, source_distance2(frame_, source_corners(s), p));
+    for (uint32_t s : inserted_)
+        if (!((best = std::min(best, source_distance2(frame_, source_corners(s), p))) > floor)) break;
     return best;
 }
 

@@ -147,7 +147,8 @@ public:
     std::string validate(bool thorough = true) const;
 
     // The exact squared distance from a point of T' (frame coordinates) to the inserted sources.
-    double direct_d2(Vec2 p) const;
+    // With `floor`: the first source's d^2 found no higher than it, if any (the least is not needed).
+    double direct_d2(Vec2 p, double floor = -HUGE_VAL) const;
     Vec2 onto_target(Vec2 p) const;  // the point of T' nearest p
     uint32_t target() const { return target_; }
     std::array<Vec3, 3> source_corners(uint32_t s) const;
