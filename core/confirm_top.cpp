@@ -89,10 +89,6 @@ Tri3 relative(const TriangleMesh& B, uint32_t t, const Vec3& o) {
     return {c[0] - o, c[1] - o, c[2] - o};
 }
 
-// max over S's corners of d(., T): d(., T) over S (convexity).
-double corner_bound(const std::array<Vec3, 3>& S, const Tri3& T) {
-    return std::max({dist_rel(S[0], T), dist_rel(S[1], T), dist_rel(S[2], T)});
-}
 
 // The target's size: its longest edge.
 double longest_edge(const std::array<Vec3, 3>& c) { return std::max({norm(c[1] - c[0]), norm(c[2] - c[1]), norm(c[0] - c[2])}); }
@@ -532,8 +528,8 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
                 raised_r = r / std::max(tg.size, 1e-300);
             }
             double u = dm + r;
-            if (u > L) u = std::min(u, corner_bound(S, T));
-            if (u > L && s.hint != UINT32_MAX && s.hint != near) u = std::min(u, corner_bound(S, relative(B, s.hint, tg.o)));
+            if (u > L) u = std::min(u, corner_distance_bound(S, T));
+            if (u > L && s.hint != UINT32_MAX && s.hint != near) u = std::min(u, corner_distance_bound(S, relative(B, s.hint, tg.o)));
             double cut_slack = 0;
             if (u + slack > L + tol) {
                 if (!exact) exact_distance(g, tg, m, nearest, err);

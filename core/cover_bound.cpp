@@ -108,6 +108,15 @@ double along_normal(const std::vector<Vec3>& xs, const std::array<Vec3, 3>& S, c
     return std::min(by_plane, by_corners);
 }
 
+// The triangles of g's mesh listed in the voxels of o + q, each once.
+std::vector<uint32_t> triangles_near(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q) {
+    std::vector<uint32_t> near;
+    for (size_t v : g.voxels_of_triangle({o + q[0], o + q[1], o + q[2]})) near.insert(near.end(), g.begin(v), g.end(v));
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    return near;
+}
+
 // A bound of d over the part of q within `reach` of its corner i (a needle's tip, where K's corner
 // lies `reach` inside), or HUGE_VAL: that part lies in the triangle Z of q's corner and the points
 // reach / cos(a / 2) along its edges, and d(., S) is convex, so the least over the triangles S
@@ -125,10 +134,8 @@ double tip_bound(const std::vector<uint32_t>& near, const TriangleMesh& B, const
     double best = HUGE_VAL;
     for (uint32_t t : near) {
         const auto k = B.corners(t);
-        const Vec3 S0 = k[0] - o, S1 = k[1] - o, S2 = k[2] - o;
-        double worst = 0;
-        for (const Vec3& z : Z) worst = std::max(worst, std::sqrt(closest_point_on_triangle(z, S0, S1, S2).dist2));
-        if (worst < best) best = worst, m = std::max({norm(S0), norm(S1), norm(S2)});
+        const std::array<Vec3, 3> S{k[0] - o, k[1] - o, k[2] - o};
+        if (const double worst = corner_distance_bound(Z, S); worst < best) best = worst, m = std::max({norm(S[0]), norm(S[1]), norm(S[2])});
     }
     return best;
 }
@@ -154,17 +161,16 @@ double thin_cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3,
     const double off = norm((c - a) - dot(c - a, e) * e);
     std::vector<std::pair<double, Vec3>> cands;  // (distance from ab's middle, unit normal times shape)
     double nearest = HUGE_VAL;
-    for (size_t v : g.voxels_of_triangle({o + a, o + b, o + c}))
-        for (auto it = g.begin(v); it != g.end(v); ++it) {
-            const auto k = g.mesh().corners(*it);
-            const std::array<Vec3, 3> S{k[0] - o, k[1] - o, k[2] - o};
-            const Vec3 n = cross(S[1] - S[0], S[2] - S[0]);
-            const double ln = norm(n);
-            if (!(ln > 0) || !(std::fabs(dot(n, e)) <= 0.5 * ln)) continue;
-            const double d = std::sqrt(closest_point_on_triangle(mid, S[0], S[1], S[2]).dist2);
-            cands.push_back({d, n / (norm(S[1] - S[0]) * norm(S[2] - S[0]))});
-            nearest = std::min(nearest, d);
-        }
+    for (uint32_t t : triangles_near(g, o, q)) {
+        const auto k = g.mesh().corners(t);
+        const std::array<Vec3, 3> S{k[0] - o, k[1] - o, k[2] - o};
+        const Vec3 n = cross(S[1] - S[0], S[2] - S[0]);
+        const double ln = norm(n);
+        if (!(ln > 0) || !(std::fabs(dot(n, e)) <= 0.5 * ln)) continue;
+        const double d = std::sqrt(closest_point_on_triangle(mid, S[0], S[1], S[2]).dist2);
+        cands.push_back({d, n / (norm(S[1] - S[0]) * norm(S[2] - S[0]))});
+        nearest = std::min(nearest, d);
+    }
     Vec3 ns;
     double best = 0;
     for (const auto& [d, n] : cands)
@@ -217,10 +223,7 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
     for (const Vec2& p : pq) lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
     double M = std::max({norm(q[0]), norm(q[1]), norm(q[2])});
 
-    std::vector<uint32_t> near;
-    for (size_t v : g.voxels_of_triangle({o + q[0], o + q[1], o + q[2]})) near.insert(near.end(), g.begin(v), g.end(v));
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
+    const std::vector<uint32_t> near = triangles_near(g, o, q);
 
     std::vector<std::array<Vec2, 3>> kept;
     std::vector<Side> sides;

@@ -83,6 +83,12 @@ bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec
     return face_foot(p, a, b, c, out, r) == Foot::Inside;
 }
 
+double corner_distance_bound(const std::array<Vec3, 3>& s, const std::array<Vec3, 3>& t) {
+    double d = 0;
+    for (const Vec3& p : s) d = std::max(d, std::sqrt(closest_point_on_triangle(p, t[0], t[1], t[2]).dist2));
+    return d;
+}
+
 double triangle_distance_lower(const Vec3& p, const Vec3& a0, const Vec3& b0, const Vec3& c0) {
     using LD = long double;
     struct V {

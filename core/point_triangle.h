@@ -1,5 +1,7 @@
 // Exact (to rounding) closest point on a triangle, robust for slivers and degenerate triangles.
 #pragma once
+#include <array>
+
 #include "vec.h"
 
 namespace hlens {
@@ -19,6 +21,10 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
 // The same where p's foot on the plane lies inside the face (true, `out` set); false where the
 // closest point is on the boundary or the triangle has no height (the caller then takes the edges).
 bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, ClosestPoint& out);
+
+// The largest distance from the corners of s to the closed triangle t (closest_point_on_triangle's):
+// d(., t) is convex, so it bounds the distance from every point of the triangle s.
+double corner_distance_bound(const std::array<Vec3, 3>& s, const std::array<Vec3, 3>& t);
 
 // A distance from p to the closed triangle abc that the true one is never below (but for a few
 // ulps of |p - a| and the edges), for the certified interval's lower end. closest_point_on_triangle
