@@ -225,6 +225,42 @@ TEST(SolverRandom, NearlyDegenerate) {
     }
 }
 
+// A target with no area (a segment: two of its corners the same point) against 24 sources along
+// it, two with a corner at its ends: in odd trials points (zero-area triangles, whose distances
+// along the segment have no region ends inside it, so the largest value lies where two of them
+// cross), in even ones small random triangles, every fourth a sliver. Its maximum
+// (degenerate_maximum: piece ends and crossings of the sources' lower envelope, highest bound
+// first, dropped once no bound is above the best) is at least the largest of 20,001 brute-force
+// distances sampled along the segment and at most that plus half their spacing (d is 1-Lipschitz).
+TEST(SolverRandom, SegmentTargetLiesBetweenSamplingAndLipschitz) {
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<double> U(-1, 1);
+    for (int trial = 0; trial < 12; ++trial) {
+        const Vec3 a{0, 0, 0}, b{1, 0.3, 0.1};
+        const TriangleMesh A = mesh_of({a, b}, {{0, 1, 0}});
+        std::vector<Vec3> p;
+        std::vector<Tri> t;
+        for (uint32_t k = 0; k < 24; ++k) {
+            const Vec3 c = k < 2 ? (k ? b : a) : a + (0.5 + 0.5 * U(rng)) * (b - a) + Vec3{0.1 * U(rng), 0.1 * U(rng), 0.1 * U(rng)};
+            const double size = trial % 2 ? 0.0 : 0.05 + 0.1 * (1 + U(rng)), thin = k % 4 == 0 ? 1e-9 : 1.0;
+            const Vec3 u{U(rng), U(rng), U(rng)}, v{U(rng), U(rng), U(rng)};
+            p.insert(p.end(), {c, c + size * u, c + size * (u + thin * v)});
+            t.push_back({3 * k, 3 * k + 1, 3 * k + 2});
+        }
+        const TriangleMesh B = mesh_of(p, t);
+        VoxelGrid grid(A, B);
+        TargetSolver ts(grid, 0, 0);
+        ts.run();
+        ASSERT_EQ(ts.domain_mesh(), nullptr) << "the target should have no domain mesh";
+        const int n = 20000;
+        double sampled = 0;
+        for (int i = 0; i <= n; ++i) sampled = std::max(sampled, brute_distance(a + (double(i) / n) * (b - a), B));
+        const double d = std::sqrt(ts.max_sq()), half_spacing = 0.5 * norm(b - a) / n;
+        EXPECT_GE(d, sampled - 1e-12) << "trial " << trial;
+        EXPECT_LE(d, sampled + half_spacing + 1e-12) << "trial " << trial;
+    }
+}
+
 // ---------------------------------------------------------------- stepping and events
 
 TEST(SolverSteps, EventsInOrderAndStateBetweenSteps) {
