@@ -61,12 +61,8 @@ static void enclosing_ball(const Vec3& a, const Vec3& b, const Vec3& c, Vec3& ce
 // d(p, B) <= d(p, T) for any triangle T of B, and d(., T) is convex, so its maximum over a triangle of A
 // is at a corner. With T the nearest triangle of a nearby point this is often far tighter than the
 // Lipschitz bound: it is exact where A's triangle sees only T (parallel offsets, coinciding meshes).
-static double corner_bound(const Vec3 (&v)[3], const TriangleMesh& B, uint32_t T) {
-    if (T >= B.num_triangles()) return kInf;
-    auto c = B.corners(T);
-    double m = 0;
-    for (const Vec3& p : v) m = std::max(m, closest_point_on_triangle(p, c[0], c[1], c[2]).dist2);
-    return std::sqrt(m);
+static double corner_bound(const std::array<Vec3, 3>& v, const TriangleMesh& B, uint32_t T) {
+    return T < B.num_triangles() ? corner_distance_bound(v, B.corners(T)) : kInf;
 }
 
 // Kept whole (~80 lines): the corner pass (per-triangle bounds and their order) and the
@@ -109,9 +105,8 @@ LipschitzBound lipschitz_bounds(const TriangleMesh& A, const VoxelGrid& grid, in
         auto c = A.corners(t);
         double e01 = norm(c[1] - c[0]), e12 = norm(c[2] - c[1]), e20 = norm(c[0] - c[2]);
         ub[t] = std::min({vd[f[0]] + std::max(e01, e20), vd[f[1]] + std::max(e01, e12), vd[f[2]] + std::max(e12, e20)});
-        const Vec3 v[3] = {c[0], c[1], c[2]};
         for (int i = 0; i < 3 && ub[t] > res.lower; ++i)
-            if (i == 0 || vhint[f[i]] != vhint[f[i - 1]]) ub[t] = std::min(ub[t], corner_bound(v, B, vhint[f[i]]));
+            if (i == 0 || vhint[f[i]] != vhint[f[i - 1]]) ub[t] = std::min(ub[t], corner_bound(c, B, vhint[f[i]]));
         prio[t] = std::max({vd[f[0]], vd[f[1]], vd[f[2]]});
         if (ub[t] > res.lower + slack()) order.push_back(t);  // most triangles end here
     }
@@ -137,7 +132,7 @@ LipschitzBound lipschitz_bounds(const TriangleMesh& A, const VoxelGrid& grid, in
             const double keep = res.lower + slack();
             double u = d + r;
             if (u > keep) {
-                const Vec3 v[3] = {s.a, s.b, s.c};
+                const std::array<Vec3, 3> v{s.a, s.b, s.c};
                 u = std::min(u, corner_bound(v, B, q.triangle));
                 if (u > keep && s.hint != q.triangle) u = std::min(u, corner_bound(v, B, s.hint));
             }

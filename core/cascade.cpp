@@ -75,14 +75,6 @@ double sliver_slack(const Corners& c) {
     return TargetSolver::sliver_slack(TargetFrame::make(c));
 }
 
-// max over the corners of S of d^2(., T): max of d^2(., T) over S, T convex.
-double corner_bound_sq(const Corners& S, const TriangleMesh& B, uint32_t t) {
-    auto tc = B.corners(t);
-    double m = 0;
-    for (const Vec3& v : S) m = std::max(m, closest_point_on_triangle(v, tc[0], tc[1], tc[2]).dist2);
-    return m;
-}
-
 // max of d^2 over S when S is cut by a plane through the edge that triangles t1 and t2 of B share,
 // bisecting their dihedral angle: each side is a convex polygon, bounded by its vertices against
 // one of the two (convexity again). Tight where S straddles that edge and d to the two triangles is
@@ -269,7 +261,7 @@ private:
     double corner_bound(const Piece& p) const {
         double u = HUGE_VAL;
         for (int i = 0; i < kCandidates && p.cand[i] != UINT32_MAX; ++i) {
-            u = std::min(u, corner_bound_sq(p.c, B_, p.cand[i]));
+            u = std::min(u, corner_distance_bound2(p.c, B_.corners(p.cand[i])));
             for (int j = i + 1; j < kCandidates && p.cand[j] != UINT32_MAX; ++j)
                 u = std::min(u, edge_cut_bound_sq(p.c, B_, p.cand[i], p.cand[j]));
         }

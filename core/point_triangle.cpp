@@ -83,10 +83,15 @@ bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec
     return face_foot(p, a, b, c, out, r) == Foot::Inside;
 }
 
+double corner_distance_bound2(const std::array<Vec3, 3>& s, const std::array<Vec3, 3>& t) {
+    double d2 = 0;
+    for (const Vec3& p : s) d2 = std::max(d2, closest_point_on_triangle(p, t[0], t[1], t[2]).dist2);
+    return d2;
+}
+
+// sqrt is monotone and correctly rounded: the root of the largest square is the largest root.
 double corner_distance_bound(const std::array<Vec3, 3>& s, const std::array<Vec3, 3>& t) {
-    double d = 0;
-    for (const Vec3& p : s) d = std::max(d, std::sqrt(closest_point_on_triangle(p, t[0], t[1], t[2]).dist2));
-    return d;
+    return std::sqrt(corner_distance_bound2(s, t));
 }
 
 double triangle_distance_lower(const Vec3& p, const Vec3& a0, const Vec3& b0, const Vec3& c0) {

@@ -23,8 +23,10 @@ ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3&
 bool closest_point_inside(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, ClosestPoint& out);
 
 // The largest distance from the corners of s to the closed triangle t (closest_point_on_triangle's):
-// d(., t) is convex, so it bounds the distance from every point of the triangle s.
+// d(., t) is convex, so it bounds the distance from every point of the triangle s. The second is
+// its square (the first is its square root, to the bit).
 double corner_distance_bound(const std::array<Vec3, 3>& s, const std::array<Vec3, 3>& t);
+double corner_distance_bound2(const std::array<Vec3, 3>& s, const std::array<Vec3, 3>& t);
 
 // A distance from p to the closed triangle abc that the true one is never below (but for a few
 // ulps of |p - a| and the edges), for the certified interval's lower end. closest_point_on_triangle
