@@ -24,6 +24,8 @@
 #include <hlens/surface_stats.h>
 #include <hlens/target_solver.h>
 
+#include "../tests/test_meshes.h"  // sliver_arc
+
 using namespace hlens;
 
 namespace {
@@ -238,3 +240,24 @@ static void voxel_grid(benchmark::State& state, const char* file) {
 }
 BENCHMARK_CAPTURE(voxel_grid, nefertiti, "nefertiti.obj")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(voxel_grid, spot, "spot.obj")->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// A degenerate target's maximum (TargetSolver::degenerate_maximum): a segment 9 from a strip of n
+// slivers on a circle, every one within the search radius, its maximum flat (the configuration of
+// tests/test_solver.cpp, SolverRandom.SegmentUnderManySliversIsNotCubic). Minutes at n = 2,500
+// before the envelope's bins and the doubling schedule. hlens_bench --benchmark_filter=degenerate
+static void degenerate_segment(benchmark::State& state) {
+    const int n = (int)state.range(0);
+    const double R = 18, cz = 9, span = 2.5 / R;
+    const TriangleMesh A = make_mesh({{-1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, {{0, 1, 2}}, "segment");
+    const TriangleMesh B = hlens_test::sliver_arc(n, R, cz, span);
+    const VoxelGrid grid(A, B);
+    size_t evaluations = 0;
+    for (auto _ : state) {
+        TargetSolver ts(grid, 0, 0);
+        ts.run();
+        evaluations = ts.distance_evaluations();
+        benchmark::DoNotOptimize(ts.max_sq());
+    }
+    state.counters["distance_evaluations"] = (double)evaluations;
+}
+BENCHMARK(degenerate_segment)->Arg(250)->Arg(2500)->Unit(benchmark::kMillisecond)->UseRealTime();

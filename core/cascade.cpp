@@ -36,6 +36,7 @@
 #include "confirm_top.h"
 #include "parallel.h"
 #include "point_triangle.h"
+#include "split_pattern.h"
 #include "target_solver.h"
 
 namespace hlens {
@@ -291,6 +292,14 @@ private:
 
     void drop(const Piece& p) { atomic_max(bound_sq_[p.target], p.u); }
 
+    // Whether p is longer than the smallest piece, 1/2^kMaxDepth of its target's longest edge (1.5
+    // times it: four children halve every edge, so they stop at depth kMaxDepth whatever the
+    // rounding; a thin piece, split in two, takes at most two splits to halve its longest edge).
+    bool above_smallest(const Piece& p) const {
+        constexpr double k = 1.5 / (1 << kMaxDepth);
+        return p.depth < 3 * kMaxDepth && longest_edge2(p.c) > k * k * longest_edge2(A_.corners(p.target));
+    }
+
     void process(Piece& p, PieceQueue& queue) {
         if (p.u < threshold()) return drop(p);
         if (!p.tightened && !tighten(p)) return;
@@ -310,20 +319,28 @@ private:
         // "cluster_vertex" 260). The piece is solved as it is.
         const double ratio = p.centre_sq >= threshold() ? kSplitRatio : kFineRatio;
         const double source2 = std::max(longest_edge2(B_.corners(p.cand[0])), 1e-6 * p.centre_sq);
-        if (p.depth < kMaxDepth && threshold() > 0 && longest_edge2(p.c) > ratio * ratio * source2) {
-            // Points 0-2 are the corners, 3-5 the edge midpoints; each gets its nearest triangle.
+        if (above_smallest(p) && threshold() > 0 && longest_edge2(p.c) > ratio * ratio * source2) {
+            // Points 0-2 are the corners, 3-5 the edge midpoints; those the children use get their
+            // nearest triangles (four children, or two for a thin piece: split_pattern).
             const Vec3 pt[6] = {p.c[0], p.c[1], p.c[2], 0.5 * (p.c[0] + p.c[1]), 0.5 * (p.c[1] + p.c[2]),
                                 0.5 * (p.c[2] + p.c[0])};
+            const SplitPattern sp = split_pattern(p.c);
+            bool used[6] = {};
+            for (int n = 0; n < sp.count; ++n)
+                for (int k : sp.child[n]) used[k] = true;
             uint32_t tri[6] = {p.corner_tri[0], p.corner_tri[1], p.corner_tri[2], 0, 0, 0};
             for (int k = 3; k < 6; ++k) {
+                if (!used[k]) continue;
                 VoxelGrid::Nearest q = grid_.nearest(1 - side_, pt[k], tri[k - 3]);
                 atomic_max(L_, q.dist2);
                 tri[k] = q.triangle;
             }
-            static const int kChild[4][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}};
-            for (const auto& ch : kChild) {
+            for (int n = 0; n < sp.count; ++n) {
                 Piece child = p;  // the parent's bound holds over the child too
-                for (int i = 0; i < 3; ++i) { child.c[i] = pt[ch[i]]; child.corner_tri[i] = tri[ch[i]]; }
+                for (int i = 0; i < 3; ++i) {
+                    child.c[i] = pt[sp.child[n][i]];
+                    child.corner_tri[i] = tri[sp.child[n][i]];
+                }
                 child.depth = p.depth + 1;
                 child.tightened = false;
                 if (!tighten(child)) return;

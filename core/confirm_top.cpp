@@ -43,6 +43,7 @@
 #include "cascade.h"
 #include "cover_bound.h"
 #include "point_triangle.h"
+#include "split_pattern.h"
 
 namespace hlens {
 
@@ -331,40 +332,15 @@ double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t
     return std::min(worst, std::max(on_t, on_u));
 }
 
-// A sub-triangle's children (uv): four, by its edges' midpoints; or, where it is thin (its height
-// over its longest edge below a quarter of that edge: a needle, or a segment where two corners of
-// a degenerate target coincide), two, by its longest edge's midpoint, which shrinks it as the four
-// do at half the cost: a needle's four children are needles, 4^k pieces to halve it k times
-// (generate_pairs6.py "sliver_strip" 58161: a segment target along a strip's boundary, its budget
-// spent on pieces 4.2e-6 long where 3.5e-9 closes them; generate_pairs10.py "cad_plate" 498). `S`:
-// its corners relative to the target's.
+// A sub-triangle's children (uv), by split_pattern of its corners `S` (relative to the target's):
+// four, or two where it is thin.
 int children(const Sub& s, const std::array<Vec3, 3>& S, std::array<std::array<Vec2, 3>, 4>& out) {
-    for (int a = 0; a < 3; ++a) {
-        // Two corners the same point (a degenerate target: every piece of it is a segment): the
-        // segment's halves, each with a corner twice (longest-edge bisection would keep a child
-        // as long as its parent, the third corner lying on the edge it halves).
-        const int b = (a + 1) % 3, c = (a + 2) % 3;
-        if (S[a] == S[b]) {
-            const Vec2 m = 0.5 * (s.uv[a] + s.uv[c]);
-            out[0] = {s.uv[a], s.uv[a], m};
-            out[1] = {m, m, s.uv[c]};
-            return 2;
-        }
-    }
-    int i = 0;
-    double longest = 0;
-    for (int k = 0; k < 3; ++k)
-        if (const double l = norm(S[(k + 1) % 3] - S[k]); l > longest) longest = l, i = k;
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    if (norm(cross(S[j] - S[i], S[k] - S[i])) < 0.25 * longest * longest) {
-        const Vec2 m = 0.5 * (s.uv[i] + s.uv[j]);
-        out[0] = {s.uv[k], s.uv[i], m};
-        out[1] = {s.uv[k], m, s.uv[j]};
-        return 2;
-    }
-    const Vec2 ab = 0.5 * (s.uv[0] + s.uv[1]), bc = 0.5 * (s.uv[1] + s.uv[2]), ca = 0.5 * (s.uv[2] + s.uv[0]);
-    out = {std::array<Vec2, 3>{s.uv[0], ab, ca}, {ab, s.uv[1], bc}, {ca, bc, s.uv[2]}, {ab, bc, ca}};
-    return 4;
+    const SplitPattern sp = split_pattern(S);
+    const Vec2 pt[6] = {s.uv[0], s.uv[1], s.uv[2], 0.5 * (s.uv[0] + s.uv[1]), 0.5 * (s.uv[1] + s.uv[2]),
+                        0.5 * (s.uv[2] + s.uv[0])};
+    for (int n = 0; n < sp.count; ++n)
+        for (int i = 0; i < 3; ++i) out[n][i] = pt[sp.child[n][i]];
+    return sp.count;
 }
 
 // Whether a world point's rounding (a few ulps of `coord`, the coordinates' magnitude) reaches

@@ -305,7 +305,17 @@ void TargetSolver::insert(uint32_t s, double dist, size_t voxel) {
     for (const Vec3& c : sc) source_extent_ = std::max(source_extent_, norm(c - frame_.origin));
     if (!mesh_) {
         degenerate_projections_.push_back(proj);
+        // Each evaluation looks at every piece along the edges and every crossing of two: after
+        // every insertion that is cubic in the sources (a segment target 9 from a strip of 2,500
+        // slivers, every one within the radius, took minutes). Run in one go, it is evaluated as the
+        // sources double, and at the end: in between the maximum is an earlier, higher one, so
+        // the search only culls less (at most twice the sources it needs) and stops no earlier.
+        if (lazy_degenerate_ && inserted_.size() < degenerate_due_) {
+            degenerate_stale_ = true;
+            return;
+        }
         degenerate_maximum();
+        degenerate_due_ = 2 * inserted_.size();
         return;
     }
     if (watching()) {
@@ -442,52 +452,133 @@ void pieces_along(Vec2 A, Vec2 D, const std::vector<uint32_t>& sources, const st
         }
 }
 
+// Bins along the segment A + t D, t in [0, 1]. Over bin b, [b / K, (b + 1) / K]: `top`, an upper
+// bound of the lower envelope of d^2, the least over sources of the larger of d^2 at the bin's ends
+// (d^2 to one triangle is convex along a line), with 1e-12 of it and `noise` (rounding_sq() in
+// frame units: the evaluation's absolute rounding, for near-coincident meshes), evaluated directly
+// as the candidates are; and the pieces that may be the envelope somewhere in it (their least
+// value there not above `top`). A bin is live while its top is above the best value found.
+struct EnvelopeBins {
+    std::vector<double> top;
+    std::vector<int> first, pieces;  // bin b's pieces: pieces[first[b] .. first[b + 1]), ascending
+    int bin(double t) const { return std::min((int)top.size() - 1, std::max(0, (int)std::floor(t * top.size()))); }
+    // The piece of bin(t) lowest at t (-1 if none holds t): its source is most likely the nearest.
+    int lowest_at(double t, const std::vector<SegmentPiece>& all) const {
+        const int b = bin(t);
+        int best = -1;
+        double v = HUGE_VAL;
+        for (int i = first[b]; i < first[b + 1]; ++i) {
+            const SegmentPiece& pc = all[pieces[i]];
+            if (pc.lo <= t && t <= pc.hi && pc.q(t) < v) v = pc.q(t), best = pieces[i];
+        }
+        return best;
+    }
+};
+
+double least_on(const Poly& q, double lo, double hi) {
+    double m = std::min(q(lo), q(hi));
+    if (q.deg == 2 && q.c[2] > 0) {
+        const double x = -q.c[1] / (2 * q.c[2]);
+        if (lo < x && x < hi) m = std::min(m, q(x));
+    }
+    return m;
+}
+
+template <class Dist2>
+void envelope_bins(Vec2 A, Vec2 D, const std::vector<uint32_t>& sources, const std::vector<SegmentPiece>& pieces, int K,
+                   double noise, Dist2 dist2, EnvelopeBins& out) {
+    out.top.assign(K, K > 1 ? HUGE_VAL : -HUGE_VAL);
+    if (K > 1) {
+        std::vector<double> e(K + 1);
+        for (uint32_t s : sources) {
+            for (int b = 0; b <= K; ++b) e[b] = dist2(s, A + (double(b) / K) * D);
+            for (int b = 0; b < K; ++b) out.top[b] = std::min(out.top[b], std::max(e[b], e[b + 1]));
+        }
+    }
+    for (double& t : out.top) t = t * (1 + 1e-12) + noise;
+    if (K == 1) out.top[0] = HUGE_VAL;  // one bin: no bound, every piece
+    std::vector<std::pair<int, int>> in;  // (bin, piece)
+    for (size_t i = 0; i < pieces.size(); ++i) {
+        const SegmentPiece& pc = pieces[i];
+        for (int b = out.bin(pc.lo); b <= out.bin(pc.hi); ++b) {
+            const double lo = std::max(pc.lo, double(b) / K), hi = std::min(pc.hi, double(b + 1) / K);
+            if (K == 1 || least_on(pc.q, lo, hi) - pc.slop <= out.top[b]) in.push_back({b, (int)i});
+        }
+    }
+    out.first.assign(K + 1, 0);
+    for (const auto& x : in) ++out.first[x.first + 1];
+    for (int b = 0; b < K; ++b) out.first[b + 1] += out.first[b];
+    out.pieces.resize(in.size());
+    std::vector<int> fill(out.first.begin(), out.first.end() - 1);
+    for (const auto& x : in) out.pieces[fill[x.first]++] = x.second;
+}
+
 }  // namespace
 
 // A target with (nearly) no area is handled as its three edges: along a segment d^2 is the lower
 // envelope of convex pieces, whose maximum lies at a piece end or where two pieces cross. Such
 // points are evaluated directly, highest bound first: d^2 at a point of piece p is at most p's
 // quadratic there (its source's d^2), so once no bound is above the best value found, no other
-// point can beat it; two pieces cross above it only if both rise above it on their overlap; and a
+// point can beat it; two pieces cross above it only if both rise above it on their overlap, and
+// only in a bin whose bound of the envelope is above it (EnvelopeBins; with many pieces); and a
 // point's distances stop as soon as one is no higher than the best. (Every point against every
 // source after every insertion, each source projected again each time, a target 9 away from 94
 // slivers took 1.4 s, and fast mode solved three such targets in 2,052 pieces: generate_pairs11.py
-// "slivers_strip" 1023, 122 s.) The interior of a sliver is within its height of an edge, so the
-// result is short of the true maximum by at most that height (reported as slack()).
+// "slivers_strip" 1023, 122 s. A segment under a strip of 2,500 slivers on a circle, its maximum
+// flat, crossed thousands of pieces whose tops rose above the best and evaluated each crossing
+// against every source: minutes.) The interior of a sliver is within its height of an edge, so
+// the result is short of the true maximum by at most that height (reported as slack()).
 void TargetSolver::degenerate_maximum() {
     assert(degenerate_projections_.size() == inserted_.size());
+    degenerate_stale_ = false;
     double best = -HUGE_VAL;
     struct Candidate { double bound, t; };
     std::vector<Candidate> cands;
     std::vector<SegmentPiece> pieces;
+    EnvelopeBins bins;
     for (int k = 0; k < 3; ++k) {
         const Vec2 A = frame_.corners[k], D = frame_.corners[(k + 1) % 3] - A;
+        pieces_along(A, D, inserted_, degenerate_projections_, pieces);
+        const int K = (int)std::clamp<size_t>(pieces.size() / 16, 1, 256);  // few pieces: one bin, no bound
+        const double noise = rounding_sq() / (frame_.scale * frame_.scale);
+        auto dist2 = [&](uint32_t s, Vec2 p) { return ++distance_evaluations_, source_distance2(frame_, source_corners(s), p); };
+        envelope_bins(A, D, inserted_, pieces, K, noise, dist2, bins);
         auto evaluate = [&] {  // highest bound first, until no bound is above the best value found
             std::sort(cands.begin(), cands.end(), [](const Candidate& x, const Candidate& y) { return x.bound > y.bound; });
             for (const Candidate& c : cands) {
                 if (!(c.bound > best)) break;
-                const Vec2 p = A + std::min(1.0, std::max(0.0, c.t)) * D;
+                const double t = std::min(1.0, std::max(0.0, c.t));
+                if (!(bins.top[bins.bin(t)] > best)) continue;
+                const Vec2 p = A + t * D;
+                // The source lowest there first: where it is no higher than the best, so is d^2.
+                const int low = bins.lowest_at(t, pieces);
+                if (low >= 0 && !(dist2(pieces[low].s, p) > best)) continue;
                 const double v = direct_d2(p, best);
                 if (v > best) { best = v; max_2d_ = p; }
             }
             cands.clear();
         };
-        pieces_along(A, D, inserted_, degenerate_projections_, pieces);
         cands.assign({{HUGE_VAL, 0.0}, {HUGE_VAL, 1.0}});
         for (const SegmentPiece& pc : pieces) {
             cands.push_back({pc.q(pc.lo) + pc.slop, pc.lo});
             cands.push_back({pc.q(pc.hi) + pc.slop, pc.hi});
         }
         evaluate();
-        for (size_t i = 0; i < pieces.size(); ++i)
-            for (size_t j = i + 1; j < pieces.size(); ++j) {
-                const SegmentPiece &p = pieces[i], &q = pieces[j];
-                if (p.s == q.s || !(std::min(p.top, q.top) > best)) continue;
-                double lo = std::max(p.lo, q.lo), hi = std::min(p.hi, q.hi);
-                if (lo > hi) continue;
-                for (double x : sign_change_roots(p.q + (-1.0) * q.q, lo, hi))
-                    cands.push_back({std::min(p.q(x) + p.slop, q.q(x) + q.slop), x});
-            }
+        // Two pieces cross on the envelope in a live bin only where both may be the envelope there
+        // (a bin's pieces): each crossing is taken in the bin it falls in.
+        for (int b = 0; b < K; ++b) {
+            if (!(bins.top[b] > best)) continue;
+            for (int x = bins.first[b]; x < bins.first[b + 1]; ++x)
+                for (int y = x + 1; y < bins.first[b + 1]; ++y) {
+                    const SegmentPiece &p = pieces[bins.pieces[x]], &q = pieces[bins.pieces[y]];
+                    if (p.s == q.s || !(std::min(p.top, q.top) > best)) continue;
+                    const double lo = std::max(p.lo, q.lo), hi = std::min(p.hi, q.hi);
+                    if (lo > hi) continue;
+                    for (double r : sign_change_roots(p.q + (-1.0) * q.q, lo, hi))
+                        if (const double v = std::min(p.q(r) + p.slop, q.q(r) + q.slop); v > best && bins.bin(r) == b)
+                            cands.push_back({v, r});
+                }
+        }
         evaluate();
     }
     double old = max_sq_;
@@ -530,8 +621,10 @@ double TargetSolver::rounding_sq() const {
 
 double TargetSolver::direct_d2(Vec2 p, double floor) const {
     double best = HUGE_VAL;
-    for (uint32_t s : inserted_)
+    for (uint32_t s : inserted_) {
+        ++distance_evaluations_;
         if (!((best = std::min(best, source_distance2(frame_, source_corners(s), p))) > floor)) break;
+    }
     return best;
 }
 
@@ -555,6 +648,7 @@ Vec2 TargetSolver::onto_target(Vec2 p) const {
 
 void TargetSolver::finish() {
     const double sc2 = frame_.scale * frame_.scale;
+    if (!mesh_ && degenerate_stale_) degenerate_maximum();
     if (mesh_ && !inserted_.empty() && !stopped_early_) {
         // The number comes from direct evaluation of the best candidates (design notes: extra
         // candidates never hurt, and a face with a wrong polynomial cannot inflate the result).
@@ -623,7 +717,7 @@ std::unique_ptr<TargetSolver> TargetSolver::replay_to(const VoxelGrid& grid, int
 void TargetSolver::run() {
     // Run in one go with no one watching: the sources nearest first (next_nearest_source). Step by
     // step, or watched, the paper's order.
-    if (phase_ == Phase::Begin && !watching()) nearest_first_ = true;
+    if (phase_ == Phase::Begin && !watching()) nearest_first_ = lazy_degenerate_ = true;
     while (step()) {}
 }
 

@@ -149,6 +149,9 @@ public:
     // The exact squared distance from a point of T' (frame coordinates) to the inserted sources.
     // With `floor`: the first source's d^2 found no higher than it, if any (the least is not needed).
     double direct_d2(Vec2 p, double floor = -HUGE_VAL) const;
+    // Point-to-source distances evaluated so far (direct_d2's and the degenerate maximum's): a
+    // counter of the work, for tests and profiling.
+    size_t distance_evaluations() const { return distance_evaluations_; }
     Vec2 onto_target(Vec2 p) const;  // the point of T' nearest p
     uint32_t target() const { return target_; }
     std::array<Vec3, 3> source_corners(uint32_t s) const;
@@ -225,6 +228,11 @@ private:
     };
     std::vector<Near> near_;
     bool nearest_first_ = false;
+    // A target with no domain mesh, run() unwatched: degenerate_maximum() is due when the inserted
+    // sources reach this many (they double between), and at the end if any came in since.
+    mutable size_t distance_evaluations_ = 0;
+    bool lazy_degenerate_ = false, degenerate_stale_ = false;
+    size_t degenerate_due_ = 1;
     std::vector<std::pair<double, uint32_t>> found_;  // a visited voxel's new sources (storage reused)
 };
 

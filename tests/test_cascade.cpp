@@ -187,6 +187,30 @@ TEST(Cascade, TargetsSolvedWholeAreNotSolvedAgain) {
     }
 }
 
+// A thin target 9 from a strip of 250 slivers, its maximum flat: the cascade split every piece in
+// four, and a needle's four children are needles, three of them over the same half of it
+// (split_pattern), so the segment was solved in 2,049 pieces and the needle in 1,039
+// (generate_pairs11.py "slivers_strip" 1023: 2,052 pieces for three targets). The oracle: a point
+// of the target r from the circle's centre is nearest to the chord whose normal is closest in angle
+// (delta), at R cos(theta / 2) - r cos(delta) (its foot inside the chord, r < R); least r and
+// largest delta, theta / 2, meet at the lowest vertex's middle: h = (R - cz) cos(theta / 2).
+TEST(Cascade, ThinTargetsAreHalvedNotQuartered) {
+    const int n = 250;
+    const double R = 18, cz = 9, span = 2.5 / R, theta = 2 * span / n;
+    const TriangleMesh B = sliver_arc(n, R, cz, span);
+    const double h = (R - cz) * std::cos(theta / 2);
+    const TriangleMesh segment = mesh_of({{-1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, {{0, 1, 2}});
+    const TriangleMesh needle = mesh_of({{-1, 0, 0}, {1, 0, 0}, {0.99, 1e-12, 0}}, {{0, 1, 2}});
+    for (const TriangleMesh* A : {&segment, &needle}) {
+        const HausdorffResult r = hausdorff(*A, B, {}, true);
+        const char* name = A == &segment ? "segment" : "needle";
+        EXPECT_LT(r.a_to_b.exact_solves, 64u) << name;
+        EXPECT_NEAR(r.a_to_b.distance, h, 1e-12 * h) << name;
+        EXPECT_LE(r.a_to_b.lower, h * (1 + 1e-15)) << name;
+        EXPECT_GE(r.a_to_b.upper, h * (1 - 1e-15)) << name;
+    }
+}
+
 TEST(Cascade, DegenerateConfigurations) {
     auto bump = [](double x, double y) { return 0.15 * std::sin(x) * std::cos(y - 0.3); };
     TriangleMesh flat = height_field(4, [](double, double) { return 0.0; });

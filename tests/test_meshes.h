@@ -57,6 +57,21 @@ inline TriangleMesh height_field(int n, std::function<double(double, double)> z)
     return mesh_of(p, t);
 }
 
+// A strip of slivers (thin triangles 1e-6 wide in y) along n chords of the circle of radius r about
+// (0, 0, cz) in the plane y = 0, over `span` radians either side of its lowest point (a vertex there
+// when n is even). Seen from inside the circle, d is largest below the centre.
+inline TriangleMesh sliver_arc(int n, double r, double cz, double span) {
+    std::vector<Vec3> p;
+    std::vector<Tri> t;
+    for (int i = 0; i <= n; ++i) {
+        const double a = -M_PI / 2 - span + 2 * span * i / n;
+        p.push_back({r * std::cos(a), 0, cz + r * std::sin(a)});
+        p.push_back({r * std::cos(a), 1e-6, cz + r * std::sin(a)});
+    }
+    for (uint32_t i = 0; i < (uint32_t)n; ++i) t.push_back({2 * i, 2 * i + 2, 2 * i + 1});
+    return mesh_of(p, t);
+}
+
 // Every used vertex moved by a random offset of up to `amplitude` in each coordinate.
 inline TriangleMesh jittered(const TriangleMesh& m, double amplitude, unsigned seed) {
     std::mt19937 rng(seed);

@@ -226,7 +226,7 @@ TEST(SolverRandom, NearlyDegenerate) {
 }
 
 // A target with no area (a segment: two of its corners the same point) against 24 sources along
-// it, two with a corner at its ends: in odd trials points (zero-area triangles, whose distances
+// it (200 in the last four trials: many pieces, so the envelope's bins), two with a corner at its ends: in odd trials points (zero-area triangles, whose distances
 // along the segment have no region ends inside it, so the largest value lies where two of them
 // cross), in even ones small random triangles, every fourth a sliver. Its maximum
 // (degenerate_maximum: piece ends and crossings of the sources' lower envelope, highest bound
@@ -235,12 +235,13 @@ TEST(SolverRandom, NearlyDegenerate) {
 TEST(SolverRandom, SegmentTargetLiesBetweenSamplingAndLipschitz) {
     std::mt19937 rng(29);
     std::uniform_real_distribution<double> U(-1, 1);
-    for (int trial = 0; trial < 12; ++trial) {
+    for (int trial = 0; trial < 16; ++trial) {
         const Vec3 a{0, 0, 0}, b{1, 0.3, 0.1};
         const TriangleMesh A = mesh_of({a, b}, {{0, 1, 0}});
         std::vector<Vec3> p;
         std::vector<Tri> t;
-        for (uint32_t k = 0; k < 24; ++k) {
+        const uint32_t sources = trial < 12 ? 24 : 200;  // many pieces: the envelope's bins (EnvelopeBins)
+        for (uint32_t k = 0; k < sources; ++k) {
             const Vec3 c = k < 2 ? (k ? b : a) : a + (0.5 + 0.5 * U(rng)) * (b - a) + Vec3{0.1 * U(rng), 0.1 * U(rng), 0.1 * U(rng)};
             const double size = trial % 2 ? 0.0 : 0.05 + 0.1 * (1 + U(rng)), thin = k % 4 == 0 ? 1e-9 : 1.0;
             const Vec3 u{U(rng), U(rng), U(rng)}, v{U(rng), U(rng), U(rng)};
@@ -259,6 +260,26 @@ TEST(SolverRandom, SegmentTargetLiesBetweenSamplingAndLipschitz) {
         EXPECT_GE(d, sampled - 1e-12) << "trial " << trial;
         EXPECT_LE(d, sampled + half_spacing + 1e-12) << "trial " << trial;
     }
+}
+
+// A segment 9 from a strip of 2,500 slivers on a circle, every one within the search radius, its
+// maximum flat: degenerate_maximum ran after every insertion, crossed thousands of pieces whose
+// tops rose above the best and evaluated each crossing against every source (minutes; about 1e10
+// distance evaluations). The oracle as in Cascade.ThinTargetsAreHalvedNotQuartered: the largest
+// distance is (R - cz) cos(theta / 2), below the circle's centre. The count: the envelope's bins
+// (257 points a source and edge, as the sources double) and the candidates.
+TEST(SolverRandom, SegmentUnderManySliversIsNotCubic) {
+    const int n = 2500;
+    const double R = 18, cz = 9, span = 2.5 / R, theta = 2 * span / n;
+    const TriangleMesh A = mesh_of({{-1, 0, 0}, {1, 0, 0}, {1, 0, 0}}, {{0, 1, 2}});
+    const TriangleMesh B = sliver_arc(n, R, cz, span);
+    VoxelGrid grid(A, B);
+    TargetSolver ts(grid, 0, 0);
+    ts.run();
+    ASSERT_EQ(ts.domain_mesh(), nullptr) << "the target should have no domain mesh";
+    const double h = (R - cz) * std::cos(theta / 2);
+    EXPECT_NEAR(std::sqrt(ts.max_sq()), h, 1e-12 * h);
+    EXPECT_LT(ts.distance_evaluations(), 20'000'000u);
 }
 
 // ---------------------------------------------------------------- stepping and events
