@@ -90,7 +90,6 @@ Tri3 relative(const TriangleMesh& B, uint32_t t, const Vec3& o) {
     return {c[0] - o, c[1] - o, c[2] - o};
 }
 
-
 // The target's size: its longest edge.
 double longest_edge(const std::array<Vec3, 3>& c) { return std::max({norm(c[1] - c[0]), norm(c[2] - c[1]), norm(c[0] - c[2])}); }
 

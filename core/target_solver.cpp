@@ -487,16 +487,15 @@ double least_on(const Poly& q, double lo, double hi) {
 template <class Dist2>
 void envelope_bins(Vec2 A, Vec2 D, const std::vector<uint32_t>& sources, const std::vector<SegmentPiece>& pieces, int K,
                    double noise, Dist2 dist2, EnvelopeBins& out) {
-    out.top.assign(K, K > 1 ? HUGE_VAL : -HUGE_VAL);
+    out.top.assign(K, HUGE_VAL);  // one bin: no bound, every piece
     if (K > 1) {
         std::vector<double> e(K + 1);
         for (uint32_t s : sources) {
             for (int b = 0; b <= K; ++b) e[b] = dist2(s, A + (double(b) / K) * D);
             for (int b = 0; b < K; ++b) out.top[b] = std::min(out.top[b], std::max(e[b], e[b + 1]));
         }
+        for (double& t : out.top) t = t * (1 + 1e-12) + noise;
     }
-    for (double& t : out.top) t = t * (1 + 1e-12) + noise;
-    if (K == 1) out.top[0] = HUGE_VAL;  // one bin: no bound, every piece
     std::vector<std::pair<int, int>> in;  // (bin, piece)
     for (size_t i = 0; i < pieces.size(); ++i) {
         const SegmentPiece& pc = pieces[i];

@@ -228,9 +228,9 @@ private:
     };
     std::vector<Near> near_;
     bool nearest_first_ = false;
+    mutable size_t distance_evaluations_ = 0;
     // A target with no domain mesh, run() unwatched: degenerate_maximum() is due when the inserted
     // sources reach this many (they double between), and at the end if any came in since.
-    mutable size_t distance_evaluations_ = 0;
     bool lazy_degenerate_ = false, degenerate_stale_ = false;
     size_t degenerate_due_ = 1;
     std::vector<std::pair<double, uint32_t>> found_;  // a visited voxel's new sources (storage reused)
