@@ -34,6 +34,7 @@
 #include <unordered_map>
 
 #include "confirm_top.h"
+#include "copies.h"
 #include "parallel.h"
 #include "point_triangle.h"
 #include "split_pattern.h"
@@ -199,12 +200,13 @@ public:
         std::vector<uint32_t> near_vertex;
         out_.vertex_sq = farthest_vertex_sq(grid_, side_, threads, opt_.cancel, &near_vertex, &vertex_d2);
         L_ = out_.vertex_sq;
+        out_.copy = copied_targets(grid_, side_, vertex_d2);
         const size_t n = A_.num_triangles();
         // A first bound per target from its corners (no new query), and the order in which targets
         // are taken: largest bound first, so that L rises early.
         std::vector<double> U(n);
         parallel_for(n, threads, opt_.cancel, [&](size_t t) {
-            U[t] = root_piece((uint32_t)t, near_vertex, vertex_d2, HUGE_VAL).u;
+            U[t] = out_.copy[t] ? 0.0 : root_piece((uint32_t)t, near_vertex, vertex_d2, HUGE_VAL).u;
         });
         std::vector<uint32_t> order(n);
         std::iota(order.begin(), order.end(), 0u);
@@ -302,6 +304,7 @@ private:
 
     void process(Piece& p, PieceQueue& queue) {
         if (p.u < threshold()) return drop(p);
+        if (p.depth == 0 && out_.copy[p.target]) return record_copy(p.target);
         if (!p.tightened && !tighten(p)) return;
         if (p.u < threshold()) return drop(p);
         // Split while the piece is larger than the triangles of B near it (a construction costs about
@@ -350,6 +353,14 @@ private:
             return;
         }
         solve_piece(p);
+    }
+
+    // A copy of a source (copies.h): solved whole, with TargetSolver's values for it (0 at the
+    // frame's origin), so that paper mode, which runs the solver, has the same.
+    void record_copy(uint32_t t) {
+        std::lock_guard<std::mutex> lock(whole_mutex_);
+        whole_[t] = {0.0, Vec2{0, 0}, 0.0};
+        best_sq_[t] = 0.0;
     }
 
     void solve_piece(const Piece& p) {
@@ -461,6 +472,7 @@ void TargetTable::resize(size_t n) {
     slack.assign(n, 0.0);
     bound.assign(n, 0.0);
     exact.assign(n, 0);
+    copy.assign(n, 0);
 }
 
 void TargetTable::record(uint32_t t, const TargetSolver& whole) { record(t, whole.max_sq(), whole.max_point_2d(), whole.slack()); }

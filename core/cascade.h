@@ -20,6 +20,7 @@ struct TargetTable {
                                     // modes: fast mode sets it also for targets not solved whole)
     std::vector<double> bound;      // max distance over the target: exact, or an upper bound
     std::vector<uint8_t> exact;     // bound[t] is the exact maximum
+    std::vector<uint8_t> copy;      // a copy of a source triangle (copies.h): 0 everywhere, exactly
     double piece_upper = 0;         // max over solved pieces of sqrt(value) + slack (a cancelled run's upper end)
     double vertex_sq = 0;           // the farthest used vertex's squared distance (a lower bound)
     size_t solves = 0;              // exact constructions run (whole targets and pieces)

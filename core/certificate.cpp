@@ -138,7 +138,7 @@ bool polish_ties(const VoxelGrid& grid, int side, const TargetTable& tab, size_t
     const double tie = tie_threshold_sq(value * value, coord);
     std::vector<uint32_t> ties;
     for (uint32_t t = 0; t < n; ++t)
-        if (tab.value_sq[t] >= 0 && tab.value_sq[t] >= tie) ties.push_back(t);
+        if (tab.value_sq[t] >= 0 && tab.value_sq[t] >= tie && !tab.copy[t]) ties.push_back(t);
     std::stable_sort(ties.begin(), ties.end(), [&](uint32_t x, uint32_t y) { return tab.value_sq[x] > tab.value_sq[y]; });
     if (ties.size() > kPolish) ties.resize(kPolish);
     bool found = false;

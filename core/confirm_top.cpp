@@ -467,7 +467,7 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
     // The targets that can reach the result, highest first (they get the budget first).
     std::vector<uint32_t> order;
     for (uint32_t t = 0; t < A.num_triangles(); ++t) {
-        if (can_reach(A.corners(t), tab.bound[t], tab.slack[t], L)) order.push_back(t);
+        if (!tab.copy[t] && can_reach(A.corners(t), tab.bound[t], tab.slack[t], L)) order.push_back(t);  // a copy: 0
     }
     std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) { return tab.bound[x] > tab.bound[y]; });
     std::vector<Sub> stack;

@@ -10,6 +10,7 @@
 
 #include "cascade.h"
 #include "certificate.h"
+#include "copies.h"
 #include "parallel.h"
 #include "target_solver.h"
 
@@ -21,15 +22,23 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Paper mode, Algorithm 1: every target gets the full construction.
+// Paper mode, Algorithm 1: every target gets the full construction (a copy of a source triangle
+// needs none: copies.h).
 void paper_targets(const VoxelGrid& grid, int side, const HausdorffOptions& opt, TargetTable& out) {
     const size_t n = grid.mesh(side).num_triangles();
     const int threads = resolve_threads(opt.threads);
     out.resize(n);
-    out.vertex_sq = farthest_vertex_sq(grid, side, threads, opt.cancel);
+    std::vector<double> vertex_d2;
+    out.vertex_sq = farthest_vertex_sq(grid, side, threads, opt.cancel, nullptr, &vertex_d2);
+    out.copy = copied_targets(grid, side, vertex_d2);
     ProgressTicker prog(opt.progress, n);
     std::atomic<size_t> solves{0};
     parallel_for(n, threads, opt.cancel, [&](size_t t) {
+        if (out.copy[t]) {  // d = 0 on it, exactly (TargetSolver's values for it, with no search)
+            out.record((uint32_t)t, 0.0, Vec2{0, 0}, 0.0);
+            prog.tick();
+            return;
+        }
         TargetSolver ts(grid, side, (uint32_t)t);
         ts.run();
         out.record((uint32_t)t, ts);

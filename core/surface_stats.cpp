@@ -12,6 +12,8 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "cascade.h"
+#include "copies.h"
 #include "hausdorff.h"
 #include "integrals.h"
 #include "parallel.h"
@@ -103,9 +105,19 @@ void add_estimate_pieces(const std::vector<FaceMoments>& faces, double s, std::v
     }
 }
 
+// A copy of a source triangle (copies.h): d = 0 on all of it, exactly. No construction: its area
+// by cross product, nothing above any level. (A sliver copy stays a sliver, as solve_target has it.)
+bool copy_pass(const std::array<Vec3, 3>& c, TargetPass& r) {
+    if (TargetFrame::make(c).degenerate) return false;
+    r.tri.area = triangle_area(c);
+    r.estimate.push_back({r.tri.area, 0.0, 0.0});
+    return true;
+}
+
 TargetPass solve_target(const VoxelGrid& grid, int side, uint32_t t, const std::vector<double>& levels, MeshCache& cache,
-                        bool estimate) {
+                        bool estimate, bool copy) {
     TargetPass r;
+    if (copy && copy_pass(grid.mesh(side).corners(t), r)) return r;
     TargetSolver ts(grid, side, t);
     ts.run();
     const TargetFrame& fr = ts.frame();
@@ -407,9 +419,12 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     const auto t0 = Clock::now();
     std::vector<TargetPass> pass(n);
     MeshCache cache(opt.percentiles.empty() ? 0 : n);
+    std::vector<double> vertex_d2;
+    farthest_vertex_sq(grid, side, resolve_threads(opt.threads), opt.cancel, nullptr, &vertex_d2);
+    const std::vector<uint8_t> copy = copied_targets(grid, side, vertex_d2);
     ProgressTicker prog(opt.progress, n);
     parallel_for(n, resolve_threads(opt.threads), opt.cancel, [&](size_t t) {
-        pass[t] = solve_target(grid, side, (uint32_t)t, levels, cache, !opt.percentiles.empty());
+        pass[t] = solve_target(grid, side, (uint32_t)t, levels, cache, !opt.percentiles.empty(), copy[t]);
         prog.tick();
     });
     if (opt.cancel && opt.cancel->load()) { out.cancelled = true; return out; }

@@ -4,7 +4,7 @@
 // Issue 9, after Straub 2007 §5 ("future work": the mean squared distance as the integral of d^2
 // over the domains). Every target T' of the measured mesh gets the paper's full construction
 // (target_solver.h, never stopped early, as target_maxima.h runs it), and its finished domain
-// mesh is integrated (integrals.h). Percentiles are found by bisection on the exact area above t,
+// mesh is integrated (integrals.h); a copy of a source triangle (copies.h) needs none: d = 0 on it. Percentiles are found by bisection on the exact area above t,
 // each bracketed by 0 and the maximum at first: the first pass also estimates the distribution
 // (each domain's mean and variance of d as a uniform law over its range), which gives the first
 // guess; each further pass clips the targets whose distance range holds one of a few levels

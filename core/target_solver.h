@@ -229,11 +229,15 @@ private:
     std::vector<Near> near_;
     bool nearest_first_ = false;
     mutable size_t distance_evaluations_ = 0;
-    // A target with no domain mesh, run() unwatched: degenerate_maximum() is due when the inserted
-    // sources reach this many (they double between), and at the end if any came in since.
-    bool lazy_degenerate_ = false, degenerate_stale_ = false;
+    // run() unwatched: a target with no domain mesh has degenerate_maximum() due when the inserted
+    // sources reach this many (they double between), and at the end if any came in since; and a
+    // target with the corners of an inserted source ends there (covered_).
+    bool unwatched_run_ = false, degenerate_stale_ = false;
     size_t degenerate_due_ = 1;
     std::vector<std::pair<double, uint32_t>> found_;  // a visited voxel's new sources (storage reused)
+    // The target (or piece) has the three corners of an inserted source, so it lies in that source
+    // and d = 0 on all of it, exactly: max_sq() is 0 at a corner and no other source is needed.
+    bool covered_ = false;
 };
 
 }  // namespace hlens
