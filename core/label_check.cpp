@@ -99,6 +99,25 @@ static double face_distance2_world(const TargetFrame& fr, Vec2 q, const std::arr
     return (double)(h * h / nn) / ((LD)fr.scale * fr.scale);
 }
 
+// Whether the region test (face_foot: a height below 1e-12 of the longest edge is no face) takes
+// for its edges a source whose projection has a face region (a height above 1e-14 of it,
+// project_source): there the face is tested from world coordinates (face_distance2_world).
+// Generate_pairs8.py "mixed_scale" 4589: a needle 1.4e9 long and 7e-4 wide, coplanar with a target
+// 1.4e-3 across lying inside it, was taken for its edge, 1.4e-5 away, where d is 0: the domain
+// labelled with a coplanar face of the same quadratic was counted as a disagreement.
+static bool thin_face(const std::array<Vec3, 3>& s, const SourceProjection& proj) {
+    if (proj.degenerate) return false;
+    const double l2 = std::max({norm2(s[1] - s[0]), norm2(s[2] - s[1]), norm2(s[0] - s[2])});
+    return norm2(cross(s[1] - s[0], s[2] - s[0])) <= 2e-24 * l2 * l2;  // generously: the test is only more precise
+}
+
+// feature_distance2 of source s's feature r at the frame point p, a thin face from world coordinates.
+static double feature_distance2_at(Vec2 p, const std::array<Vec3, 3>& src, const std::array<Vec3, 3>& world, bool thin,
+                                   Region r, const TargetFrame& fr) {
+    const double d = feature_distance2(Vec3(p.x, p.y, 0), src[0], src[1], src[2], r);
+    return r == Region::abc && d == HUGE_VAL && thin ? face_distance2_world(fr, p, world) : d;
+}
+
 const Quadratic2* region_quadratic(const SourceProjection& p, Region r) {
     for (const SourceRegion& reg : p.regions)
         if (reg.kind == r) return &reg.poly;
@@ -161,7 +180,8 @@ bool away_from_changes(const LabelCheck& L, int x, int y, int border) {
 
 // 1. Both maps: the nearest feature (the first minimum over the sources, `src` in the frame) and
 // the domain's label, as slot * 8 + region; best_d2: the nearest feature's squared distance.
-void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& src, const std::vector<uint32_t>& ids,
+void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& src, const std::vector<std::array<Vec3, 3>>& world,
+                const std::vector<char>& thin, const TargetFrame& fr, const std::vector<uint32_t>& ids,
                 const LabelCheckOptions& opt, LabelCheck& L, std::vector<double>& best_d2) {
     auto slot_of = [&](int source) {
         for (size_t i = 0; i < ids.size(); ++i)
@@ -182,7 +202,9 @@ void map_labels(const DomainMesh& mesh, const std::vector<std::array<Vec3, 3>>& 
             for (int s = 0; s < (int)src.size(); ++s) {
                 // The source being inserted counts only where its domains already are.
                 if (s == opt.current && !(L.domain[i] >= 0 && L.domain[i] / 8 == s)) continue;
-                const NearestFeature ft = nearest_feature(q, src[s][0], src[s][1], src[s][2]);
+                NearestFeature ft = nearest_feature(q, src[s][0], src[s][1], src[s][2]);
+                if (thin[s] && ft.region != Region::abc)
+                    if (const double f = face_distance2_world(fr, p, world[s]); f <= ft.d2) ft = {f, Region::abc};
                 if (ft.d2 < best.d2) best = ft, bs = s;
             }
             if (bs < 0) continue;
@@ -218,7 +240,7 @@ int projection_feature(const std::vector<SourceProjection>& proj, int t, int nf,
 // labelled edge bc 0.57 from bc, where edge ca of the same line is the nearest feature; the
 // region test named the sliver's face, whose plane is 7e-10 relative nearer, its foot far outside).
 void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vector<std::array<Vec3, 3>>& world,
-                    const TargetFrame& fr, const std::vector<SourceProjection>& proj, double delta,
+                    const std::vector<char>& thin, const TargetFrame& fr, const std::vector<SourceProjection>& proj, double delta,
                     const std::vector<uint32_t>& ids, const LabelCheckOptions& opt, const std::vector<double>& best_d2,
                     LabelCheck& L) {
     const std::vector<int> classes = tie_classes(proj, delta);
@@ -247,13 +269,11 @@ void compare_labels(const std::vector<std::array<Vec3, 3>>& src, const std::vect
                 // ends and its one edge) than in the region test: compare the labelled quadratic's
                 // value with the nearest distance instead.
                 const Vec2 p = L.sample_point(x, y);
-                const Vec3 p3(p.x, p.y, 0);
-                double near = feature_distance2(p3, src[s][0], src[s][1], src[s][2], r);  // or the nearest of its tie class
-                if (r == Region::abc && near == HUGE_VAL) near = face_distance2_world(fr, p, world[s]);
+                double near = feature_distance2_at(p, src[s], world[s], true, r, fr);  // or the nearest of its tie class
                 if (const int c = classes[L.domain[i]]; c >= 0)
                     for (int f : members[c])
                         if (f != L.domain[i])
-                            near = std::min(near, feature_distance2(p3, src[f / 8][0], src[f / 8][1], src[f / 8][2], (Region)(f % 8)));
+                            near = std::min(near, feature_distance2_at(p, src[f / 8], world[f / 8], thin[f / 8], (Region)(f % 8), fr));
                 // As near to within delta (the rounding of the sources' frame coordinates, the
                 // tie rule's allowance on heights): distances that close are not resolved by the
                 // quadratics. (A third generator's "stacked" 2457: layers 1e-13 of T' apart, about
@@ -324,8 +344,10 @@ LabelCheck check_labels(const DomainMesh& mesh, const TargetFrame& fr, const std
     L.domain.assign(n, -1);
     std::vector<double> best_d2(n, HUGE_VAL);
 
-    map_labels(mesh, src, ids, opt, L, best_d2);
-    compare_labels(src, sources, fr, proj, delta, ids, opt, best_d2, L);
+    std::vector<char> thin;
+    for (size_t s = 0; s < sources.size(); ++s) thin.push_back(thin_face(src[s], proj[s]));
+    map_labels(mesh, src, sources, thin, fr, ids, opt, L, best_d2);
+    compare_labels(src, sources, thin, fr, proj, delta, ids, opt, best_d2, L);
     return L;
 }
 

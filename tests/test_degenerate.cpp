@@ -1841,6 +1841,61 @@ TEST(LabelCheck, FaceDistanceIsTakenAtTheSampleNotItsWorldRounding) {
     EXPECT_EQ(L.disagree, 0) << L.first;
 }
 
+// Generate_pairs8.py "mixed_scale" 4589, B's target 3 (1.4e-3 across, 2.6e8 from the origin)
+// against A in the debugger's order: A's last triangle is a needle 1.4e9 long and 7e-4 wide
+// (height 5e-13 of its length: a face to its projection, which keeps a face region down to 2e-14,
+// but its edges to the region test, which takes a height below 1e-12 as none), coplanar with the
+// target and crossing it. The domain mesh rightly merged the needle's face domain with the
+// coplanar face of A's triangle 5 (the same quadratic, 0); the label check found the needle's
+// edge, 1.4e-5 away, nearest where d is 0, and counted 792 of 12,705 samples as disagreements.
+// Oracle: the sample taken in long double from the frame lies over the needle's face (its foot
+// inside: nearer than its edges), as exact rational arithmetic on the input doubles also says
+// (the three orientations 2.0e4, 7.8e5 and 2.5e5 in world units squared, all positive).
+TEST(LabelCheck, NeedleThinnerThanTheRegionTestsFaceKeepsItsFace) {
+    const TriangleMesh A = make_mesh(
+        {{0, 0, 0}, {1024000000, 0, 0}, {1024000000, 0, 1024000000}, {0, 0, 1024000000}, {512000000, 0, 512000000},
+         {512000000.00102401, 0, 512000000}, {512000000, 0.001024, 512000000}, {512000000, -2.4473224058916978e-07, 512000000},
+         {512000000.00102401, -2.4473224058916978e-07, 512000000}, {512000000, -2.4473224058916978e-07, 512000000.00102401},
+         {256000000, 0.001024, 256000000}, {256000000.00102401, 0.001024, 256000000},
+         {256000000.00055328, 0.0020479999999999999, 256000000.00086167}, {256000000, 0.001024, 256000000},
+         {256000000.00055328, 0.001024, 256000000.00086167}, {255999999.99957386, 0.001024, 256000000.00093111},
+         {256000000, 0.001024, 256000000}, {255999999.99957386, 0.001024, 256000000.00093111},
+         {255999999.99898624, 0.0020479999999999999, 256000000.00014451}, {0, 0.001024, 0},
+         {1024000000, 0.001024, 1024000000}, {512000000, 0.001024, 512000000.00102401}},
+        {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {7, 8, 9}, {10, 11, 12}, {13, 14, 15}, {16, 17, 18}, {19, 20, 21}});
+    const TriangleMesh B = make_mesh({{0, 0, 0}, {1024000000, 0, 0}, {1024000000, 0, 1024000000}, {0, 0, 1024000000},
+                                      {363002359.85767359, 0, 961992215.60058808}, {363002359.85869759, 0, 961992215.60058808},
+                                      {363002359.85767359, 0, 961992215.60161209}, {256000000, 0.001024, 256000000},
+                                      {256000000.00102401, 0.001024, 256000000}, {256000000, 0.001024, 256000000.00102401}},
+                                     {{0, 1, 3}, {1, 2, 3}, {4, 5, 6}, {7, 8, 9}});
+    const VoxelGrid grid(A, B);
+    TargetSolver ts(grid, 1, 3);
+    ts.on_event([](const Event&) {});
+    ts.run();
+    ASSERT_NE(ts.domain_mesh(), nullptr);
+    const TargetFrame& f = ts.frame();
+    const Vec2 p{0.509765625, 0.326171875};
+    const L3 w = ld(f.origin) + ld(f.e1) * ((long double)p.x * f.scale) + ld(f.e2) * ((long double)p.y * f.scale);
+    const auto n = A.corners(7);
+    const L3 a = ld(n[0]), b = ld(n[1]), c = ld(n[2]);
+    EXPECT_LT(sliver_d2_ld(w, a, b, c), std::min({segment_d2(w, a, b), segment_d2(w, b, c), segment_d2(w, c, a)}));
+    const LabelCheck L = check_labels(*ts.domain_mesh(), f, inserted_corners(ts), ts.inserted_sources());
+    ASSERT_GT(L.samples, 10000);
+    EXPECT_EQ(L.disagree, 0) << L.first;
+    // The map names the needle's face at the sample.
+    const auto& ids = ts.inserted_sources();
+    const int slot = (int)(std::find(ids.begin(), ids.end(), 7u) - ids.begin());
+    ASSERT_LT(slot, (int)ids.size());
+    bool seen = false;
+    for (int y = 0; y < L.height; ++y)
+        for (int x = 0; x < L.width; ++x)
+            if (L.sample_point(x, y) == p) {
+                seen = true;
+                EXPECT_EQ(L.nearest[y * L.width + x], feature_index(slot, Region::abc));
+            }
+    EXPECT_TRUE(seen);
+}
+
 // Generate_pairs7.py "prism_axis_needle" 14492: a needle (1.5 long, 1e-8 high: handled as its
 // edges) on the axis of a closed heptagonal prism 1.5 high, from one cap's centre to the other's.
 // Its distance peaks at the middle of the axis, where the caps' fourteen triangles tie (d = 0.75,
