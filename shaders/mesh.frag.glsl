@@ -32,8 +32,9 @@ void main() {
         float s = mod(gl_FragCoord.x + gl_FragCoord.y, u_hatch);
         base = vec3(s < 0.5 * u_hatch ? u_grey.x : u_grey.y);
     } else if (u_use_map == 1) {
-        // (a range of one value, e.g. only the tied maxima known yet: they are its top)
-        float t = u_hi > u_lo ? clamp((v_value - u_lo) / (u_hi - u_lo), 0.0, 1.0) : (v_value >= u_hi ? 1.0 : 0.0);
+        // (a range of one value, e.g. only the tied maxima known yet: they are its top; but where
+        // that value is 0, a mesh against a copy of itself, nothing is off: the bottom)
+        float t = u_hi > u_lo ? clamp((v_value - u_lo) / (u_hi - u_lo), 0.0, 1.0) : (v_value >= u_hi && u_hi > 0.0 ? 1.0 : 0.0);
         base = texture(u_colormap, vec2((t * 255.0 + 0.5) / 256.0, 0.5)).rgb;
     }
     // Above the tolerance: a red band along the triangle's edges, inside it.

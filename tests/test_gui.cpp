@@ -1387,6 +1387,32 @@ TEST(GuiExactMap, WaitColoursEveryTriangleByItsExactMaximum) {
     EXPECT_LT(count(im, vp[0], y0, im.w, y1, [](auto p) { return grey(p) && p[0] > 90; }), 60);
 }
 
+// A mesh against itself: every triangle a copy (core/copies.h), every distance 0 exactly, and
+// the colour map's range of one value, 0: the mesh is drawn in the map's bottom colour (nothing is
+// off), not its top, which a range of one positive value (the tied maxima) gets.
+TEST(GuiExactMap, MeshAgainstItselfIsTheBottomColour) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "same.png";
+    Outcome o = run_gui(with({kDemoA, kDemoA, "--exact-colormap", "wait"}, kZoomed), png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    EXPECT_EQ(num(o.out, "a_to_b"), 0.0);
+    EXPECT_EQ(num(o.out, "b_to_a"), 0.0);
+    const size_t em = o.out.find("\"exact_colormap\"");
+    ASSERT_NE(em, std::string::npos) << o.out;
+    EXPECT_EQ(raw_value(o.out, "complete", em), "true");
+    EXPECT_EQ(num(o.out, "hi", em), 0.0);
+    Image im = load_png(png);
+    std::vector<Probe> ps = probes(o.out);
+    ASSERT_GE(ps.size(), 2u) << o.out;
+    for (const Probe& p : ps) {
+        ASSERT_GE(p.clear, 2);
+        EXPECT_EQ(p.value, 0.0);
+        const std::vector<std::array<int, 3>> px = square(im, p.x, p.y, std::min(p.clear, 6));
+        const long low = std::count_if(px.begin(), px.end(), [](auto c) { return shaded(c, kMapLow, 12); });
+        EXPECT_GT(low, (long)px.size() * 3 / 4) << "triangle " << p.triangle;
+    }
+}
+
 // The distances do not wait for the exact colour map: they are shown when the fast computation
 // ends, and the fill-in completes later; a screenshot taken as soon as the distances are known
 // has them (hlens-cli's), with the map still being filled or complete, and its picture agrees.
