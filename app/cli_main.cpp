@@ -30,6 +30,7 @@
 #include <vector>
 
 #include <hlens/bounds.h>
+#include <hlens/certificate.h>
 #include <hlens/hausdorff.h>
 #include <hlens/mesh.h>
 #include <hlens/mesh_io.h>
@@ -365,17 +366,21 @@ void export_errors(const Args& args, const TriangleMesh& A, const TriangleMesh& 
     }
 }
 
-// --tolerance without --stats: a verdict. A vertex farther than T (exact point-mesh distance)
-// proves h > T at once: report it and stop (-1: no such vertex, run the whole computation).
+// --tolerance without --stats: a verdict. A vertex farther than T proves h > T at once: report it
+// and stop (-1: no such vertex, run the whole computation). Farther for certain: its distance from
+// below, less the rounding (point_distance_lower), not the plain point-triangle distance, which
+// put a vertex of a mesh compared with a copy of itself 2e-19 away and said "not within 0".
 int early_tolerance_verdict(const Args& args, const VoxelGrid& grid) {
     const TriangleMesh &A = grid.mesh(0), &B = grid.mesh(1);
     for (int side = 0; side < (args.one_sided ? 1 : 2); ++side) {
-        const SampledBound sb = sampled_lower_bound(side == 0 ? A : B, grid, side, 1);
+        SampledBound sb = sampled_lower_bound(side == 0 ? A : B, grid, side, 1);
+        if (!(sb.value > args.tolerance)) continue;
+        sb.value = point_distance_lower(grid, side, sb.point);
         if (!(sb.value > args.tolerance)) continue;
         if (args.json) {
             print_line(to_json(stopped_early_json(A, B, side, sb, report_options(args, 1))));
         } else {
-            std::printf("NOT within tolerance %s: the vertex %s of %s (triangle %u) is at distance %s from %s,\n"
+            std::printf("NOT within tolerance %s: the vertex %s of %s (triangle %u) is at least %s from %s,\n"
                         "so %s >= %s (stopped early, without computing the distance)\n",
                         g(args.tolerance).c_str(), point_text(sb.point).c_str(), side == 0 ? "A" : "B", sb.triangle,
                         g(sb.value).c_str(), side == 0 ? "B" : "A", side == 0 ? "h(A,B)" : "h(B,A)", g(sb.value).c_str());

@@ -160,6 +160,14 @@ bool polish_ties(const VoxelGrid& grid, int side, const TargetTable& tab, size_t
 
 }  // namespace
 
+double point_distance_lower(const VoxelGrid& grid, int side, const Vec3& p) {
+    Box3 box = grid.mesh(side).bounds();
+    box.add(grid.mesh(1 - side).bounds());
+    const Witness w = witness_distance(grid.of(1 - side), p, Vec3{0, 0, 0});
+    if (!(w.lower < HUGE_VAL)) return w.lower;  // the other mesh is empty
+    return std::max(0.0, w.lower - witness_rounding(w.lower, box));
+}
+
 void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode, OneSidedResult& r) {
     const TriangleMesh& A = grid.mesh(side);
     const TriangleMesh& B = grid.mesh(1 - side);

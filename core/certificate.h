@@ -17,4 +17,10 @@ struct TargetTable;
 // (never expected: it would be a bug of the construction).
 void certify(const VoxelGrid& grid, int side, const TargetTable& tab, Mode mode, OneSidedResult& r);
 
+// A certified lower bound of the distance from the point p, taken exactly as given (a vertex of
+// mesh `side`), to the other mesh: as the interval's lower end is computed (each triangle's
+// distance from below, less the rounding), so 0 where p lies on that mesh, whatever the rounding
+// of a plain point-triangle distance (which puts a shared vertex some 1e-19 away).
+double point_distance_lower(const VoxelGrid& grid, int side, const Vec3& p);
+
 }  // namespace hlens

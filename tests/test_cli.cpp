@@ -783,6 +783,22 @@ TEST_F(Cli, ToleranceVerdictStopsEarlyAtAFartherVertex) {
     EXPECT_EQ(run({"distance", tri_a(), tri_b(), "--tolerance", "1.000001"}).code, 0);
 }
 
+// A mesh against itself is at distance 0, so within a tolerance of 0. The early verdict took a
+// vertex's plain point-triangle distance, which rounding puts some 2e-19 off the mesh that has that
+// vertex (spot, bunny, camelhead, ...), for a proof that h > 0: "NOT within tolerance 0", exit 4.
+TEST_F(Cli, AMeshIsWithinToleranceZeroOfItself) {
+    const std::string spot = std::string(HLENS_SHARED_MESHES) + "/spot.obj";
+    for (bool stats : {false, true}) {
+        SCOPED_TRACE(stats);
+        std::vector<std::string> argv{"distance", spot, spot, "--json", "--tolerance", "0"};
+        if (stats) argv.push_back("--stats");
+        Outcome r = run(argv);
+        EXPECT_EQ(r.code, 0) << r.out << r.err;
+        EXPECT_NE(r.out.find("\"within_tolerance\": true"), std::string::npos) << r.out;
+        EXPECT_EQ(num(r.out, "hausdorff"), 0.0);
+    }
+}
+
 TEST_F(Cli, ExportErrorsWritesPlyWithQuality) {
     std::string a = write("tilt.obj", kTilted), b = write("plane.obj", kPlane);
     const std::string stem = (dir / "err").string();
