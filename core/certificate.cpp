@@ -89,7 +89,7 @@ double lower_end(const VoxelGrid& grid, int side, const TargetTable& tab, const 
         r.from_point = frame.origin + offset;
     }
     const Witness wd = witness_distance(grid.of(1 - side), frame.origin, offset);
-    r.to_point = wd.to_point;
+    r.to_point = tab.copy[r.target] ? r.from_point : wd.to_point;  // a copy's point lies on the other mesh, exactly
     return std::max(0.0, std::min(r.distance, wd.lower - witness_rounding(wd.lower, box)));
 }
 

@@ -60,30 +60,36 @@ std::vector<uint8_t> copies_of(const VoxelGrid& grid, int side) {
 }  // namespace
 
 TEST(Copies, MeshAgainstARenumberedCopyIsExactlyZero) {
-    const TriangleMesh A = bumpy_with_a_segment(), B = renumbered(A, 7);
-    for (const Vec3& far : {Vec3{0, 0, 0}, Vec3{3e6, -2e6, 1e6}}) {
-        const TriangleMesh FA = shifted(A, far), FB = shifted(B, far);
-        const VoxelGrid grid(FA, FB);
-        for (int side = 0; side < 2; ++side) {
-            const std::vector<uint8_t> c = copies_of(grid, side);
-            EXPECT_EQ(std::count(c.begin(), c.end(), 1), (long)c.size()) << "every triangle has its copy";
-        }
-        for (Mode mode : {Mode::Paper, Mode::Fast})
-            for (int threads : {1, 2}) {
-                HausdorffOptions opt;
-                opt.mode = mode;
-                opt.threads = threads;
-                const HausdorffResult r = hausdorff(FA, FB, opt);
-                for (const OneSidedResult* s : {&r.a_to_b, &r.b_to_a}) {
-                    SCOPED_TRACE(std::string(mode_name(mode)) + (far.x != 0 ? " far" : ""));
-                    // Not rounding noise (1e-17, with an upper end of 6e-15): nothing is constructed.
-                    EXPECT_EQ(s->distance, 0.0);
-                    EXPECT_EQ(s->lower, 0.0);
-                    EXPECT_EQ(s->upper, 0.0);
-                    EXPECT_EQ(s->exact_solves, 0u);
-                    EXPECT_EQ(*std::max_element(s->target_max.begin(), s->target_max.end()), 0.0);
-                }
+    // Also two triangles folded along a diagonal: the witness's nearest point, searched, came out
+    // 2e-16 off the vertex it is.
+    const TriangleMesh fold = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0.2}}, {{0, 1, 2}, {1, 3, 2}});
+    for (const TriangleMesh& A : {bumpy_with_a_segment(), fold}) {
+        for (const Vec3& far : {Vec3{0, 0, 0}, Vec3{3e6, -2e6, 1e6}}) {
+            const TriangleMesh B = renumbered(A, 7);
+            const TriangleMesh FA = shifted(A, far), FB = shifted(B, far);
+            const VoxelGrid grid(FA, FB);
+            for (int side = 0; side < 2; ++side) {
+                const std::vector<uint8_t> c = copies_of(grid, side);
+                EXPECT_EQ(std::count(c.begin(), c.end(), 1), (long)c.size()) << "every triangle has its copy";
             }
+            for (Mode mode : {Mode::Paper, Mode::Fast})
+                for (int threads : {1, 2}) {
+                    HausdorffOptions opt;
+                    opt.mode = mode;
+                    opt.threads = threads;
+                    const HausdorffResult r = hausdorff(FA, FB, opt);
+                    for (const OneSidedResult* s : {&r.a_to_b, &r.b_to_a}) {
+                        SCOPED_TRACE(std::string(mode_name(mode)) + (far.x != 0 ? " far" : ""));
+                        // Not rounding noise (1e-17, with an upper end of 6e-15): nothing is constructed.
+                        EXPECT_EQ(s->distance, 0.0);
+                        EXPECT_EQ(s->lower, 0.0);
+                        EXPECT_EQ(s->upper, 0.0);
+                        EXPECT_EQ(s->exact_solves, 0u);
+                        EXPECT_EQ(s->from_point, s->to_point) << "the witness lies on the other mesh";
+                        EXPECT_EQ(*std::max_element(s->target_max.begin(), s->target_max.end()), 0.0);
+                    }
+                }
+        }
     }
 }
 
