@@ -31,6 +31,9 @@ PAIRS=(
   "fandisk|shared:fandisk.obj|pairs:fandisk_20.obj|fandisk vs its 20% simplification|0|0.1"
   "spot|shared:spot.obj|pairs:spot_perturbed.obj|spot vs a copy perturbed by 1e-3 of the diagonal|0|"
   "horse|shared:horse.ply|pairs:horse_10.obj|horse vs its 10% simplification|0|"
+  "camel-copy|shared:camelhead.off|pairs:camelhead_copy.obj|camelhead vs the same mesh written again|0|"
+  "camel-edit|shared:camelhead.off|pairs:camelhead_edit.obj|camelhead vs a local edit (the vertices within 0.02 diagonals of one moved by 1e-3)|0|"
+  "camel-float|shared:camelhead.off|pairs:camelhead_float.obj|camelhead vs its coordinates rounded to float|0|"
   "armadillo-loop|pairs:armadillo_loop2.obj|pairs:armadillo_loop1.obj|armadillo Loop-subdivided twice vs once (x16 vs x4)|1|0.25"
 )
 # How each generated file is made: file | make_pairs operation and arguments (IN is a shared mesh).
@@ -40,6 +43,9 @@ RECIPES=(
   "fandisk_20.obj|simplify fandisk.obj 0.20"
   "spot_perturbed.obj|perturb spot.obj 1e-3 1"
   "horse_10.obj|simplify horse.ply 0.10"
+  "camelhead_copy.obj|copy camelhead.off"
+  "camelhead_edit.obj|edit camelhead.off 0.02 1e-3"
+  "camelhead_float.obj|float camelhead.off"
   "armadillo_loop1.obj|loop armadillo.obj 1"
   "armadillo_loop2.obj|loop armadillo.obj 2"
 )
@@ -179,7 +185,7 @@ make_file() {  # makes pairs/FILE from its recipe unless present
     log "making pairs/$file ($op $src $arg${extra:+ $extra})"
     out="$PAIRDIR/${file%.obj}.tmp.obj"
     # shellcheck disable=SC2086
-    "$MAKE_PAIRS" "$op" "$SHARED/$src" "$out" "$arg" $extra >&2 || die "hlens_make_pairs failed on $file"
+    "$MAKE_PAIRS" "$op" "$SHARED/$src" "$out" ${arg:+"$arg"} $extra >&2 || die "hlens_make_pairs failed on $file"
     mv "$out" "$PAIRDIR/$file"
     return 0
   done

@@ -6,6 +6,11 @@
 //   make_pairs perturb IN OUT AMPLITUDE SEED move every vertex along its normal by u * AMPLITUDE *
 //                                            bounding-box diagonal, u in [-1, 1] pseudo-random
 //                                            from SEED and the vertex index (deterministic)
+//   make_pairs copy IN OUT                   the same mesh written again (a re-export; these three
+//                                            read and write doubles with the project's own reader)
+//   make_pairs edit IN OUT RADIUS AMPLITUDE  a local edit: the vertices within RADIUS * diagonal of
+//                                            vertex 0 moved along their normals by AMPLITUDE * diagonal
+//   make_pairs float IN OUT                  every coordinate rounded to float (an STL export)
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
@@ -17,6 +22,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
+
+#include <hlens/mesh_io.h>
 
 // Double-precision points, so subdivision and perturbation add no float rounding of their own.
 struct Traits : OpenMesh::DefaultTraits {
@@ -25,15 +33,68 @@ struct Traits : OpenMesh::DefaultTraits {
 };
 using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
 
+// copy, float and edit: read and written in full double precision by the project's own reader
+// (OpenMesh's readers take coordinates as float: its "copy" would be the float one).
+static int exact_copy(const std::string& op, int argc, char** argv) {
+    hlens::TriangleMesh m;
+    try {
+        m = hlens::load_mesh(argv[2]);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "make_pairs: %s\n", e.what());
+        return 2;
+    }
+    if (op == "float")
+        for (hlens::Vec3& p : m.positions) p = hlens::Vec3((float)p.x, (float)p.y, (float)p.z);
+    if (op == "edit" && argc == 6 && !m.positions.empty()) {
+        const double diag = m.bounds().diagonal(), radius = std::atof(argv[4]) * diag, offset = std::atof(argv[5]) * diag;
+        std::vector<hlens::Vec3> normal(m.positions.size(), hlens::Vec3(0, 0, 0));
+        for (size_t t = 0; t < m.num_triangles(); ++t) {  // area-weighted vertex normals
+            const auto c = m.corners(t);
+            const hlens::Vec3 n = hlens::cross(c[1] - c[0], c[2] - c[0]);
+            for (uint32_t i : m.triangles[t]) normal[i] += n;
+        }
+        const hlens::Vec3 centre = m.positions[0];
+        for (size_t v = 0; v < m.positions.size(); ++v) {
+            const double l = hlens::norm(normal[v]);
+            if (l > 0 && hlens::norm(m.positions[v] - centre) <= radius) m.positions[v] += normal[v] * (offset / l);
+        }
+    }
+    FILE* f = std::fopen(argv[3], "w");
+    if (!f) {
+        std::fprintf(stderr, "make_pairs: cannot write %s\n", argv[3]);
+        return 2;
+    }
+    for (const hlens::Vec3& p : m.positions) std::fprintf(f, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
+    for (const hlens::Tri& t : m.triangles) std::fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    const bool ok = std::fclose(f) == 0;
+    if (!ok) std::fprintf(stderr, "make_pairs: cannot write %s\n", argv[3]);
+    else std::printf("%s: %zu vertices, %zu triangles\n", argv[3], m.positions.size(), m.num_triangles());
+    return ok ? 0 : 2;
+}
+
+static double diagonal(const Mesh& m) {
+    Mesh::Point lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
+    for (auto v : m.vertices()) {
+        lo.minimize(m.point(v));
+        hi.maximize(m.point(v));
+    }
+    return (hi - lo).norm();
+}
+
 int main(int argc, char** argv) {
     std::string op = argc > 1 ? argv[1] : "";
-    if (!((argc == 5 && (op == "simplify" || op == "loop")) || (argc == 6 && op == "perturb"))) {
+    if (!((argc == 5 && (op == "simplify" || op == "loop")) || (argc == 6 && (op == "perturb" || op == "edit")) ||
+          (argc == 4 && (op == "copy" || op == "float")))) {
         std::fprintf(stderr,
                      "usage: make_pairs simplify IN OUT FRACTION\n"
                      "       make_pairs loop IN OUT N\n"
-                     "       make_pairs perturb IN OUT AMPLITUDE SEED\n");
+                     "       make_pairs perturb IN OUT AMPLITUDE SEED\n"
+                     "       make_pairs copy IN OUT\n"
+                     "       make_pairs edit IN OUT RADIUS AMPLITUDE\n"
+                     "       make_pairs float IN OUT\n");
         return 2;
     }
+    if (op == "copy" || op == "float" || op == "edit") return exact_copy(op, argc, argv);
     Mesh m;
     if (!OpenMesh::IO::read_mesh(m, argv[2])) {
         std::fprintf(stderr, "make_pairs: cannot read %s\n", argv[2]);
@@ -54,15 +115,10 @@ int main(int argc, char** argv) {
         loop.attach(m);
         loop(std::atoi(argv[4]));
         loop.detach();
-    } else {  // perturb
+    } else if (op == "perturb") {
         double amplitude = std::atof(argv[4]);
         uint64_t seed = std::strtoull(argv[5], nullptr, 10);
-        Mesh::Point lo(1e300, 1e300, 1e300), hi(-1e300, -1e300, -1e300);
-        for (auto v : m.vertices()) {
-            lo.minimize(m.point(v));
-            hi.maximize(m.point(v));
-        }
-        double offset = amplitude * (hi - lo).norm();
+        double offset = amplitude * diagonal(m);
         m.request_face_normals();
         m.request_vertex_normals();
         m.update_normals();
