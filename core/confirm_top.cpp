@@ -196,16 +196,31 @@ bool across_edge(const Tri3& T, const Vec3& x, Vec3& a, Vec3& nrm) {
 }
 
 // The plane across Q's plane through the two points of Q's boundary where d(., T) = d(., U)
-// (bisection on the edges where their difference changes sign), T on its positive side: where
-// the two are not neighbours, the ridge between them is a curve, nearly straight over a small
-// piece. False unless the difference changes sign on exactly two edges.
+// (bisection on the edges where their difference changes sign, or a corner where it is 0 between
+// corners of opposite signs), T on its positive side: where the two are not neighbours, the ridge
+// between them is a curve, nearly straight over a small piece. False unless there are exactly two
+// such points. (The corners: a box's inner facet is 0.125 from two opposite sides along its
+// mid-line x = 3.75, where halving puts sub-triangles' corners; with only the edges' sign changes
+// counted, no piece across that line could be cut and the interval stayed 1e-4 wide:
+// generate_pairs6.py "box_stack" 58688. Not a 0 between corners of one sign: over coplanar
+// triangles that overlap, the difference is 0 on a region, and a line through two of its corners
+// cut worse than the plane across_edge takes.)
 bool ridge(const Piece& Q, const Tri3& T, const Tri3& U, Vec3& a, Vec3& nrm) {
     auto f = [&](const Vec3& x) { return dist_rel(x, T) - dist_rel(x, U); };
+    std::array<double, 16> fv;
+    for (int i = 0; i < Q.n; ++i) fv[i] = f(Q.p[i]);
     Vec3 at[2];
     int k = 0;
     for (int i = 0; i < Q.n; ++i) {
+        const double fp = fv[(i + Q.n - 1) % Q.n], fn = fv[(i + 1) % Q.n];
+        if (fv[i] == 0 && ((fp < 0 && fn > 0) || (fp > 0 && fn < 0))) {
+            if (k == 2) return false;
+            at[k++] = Q.p[i];
+        }
+    }
+    for (int i = 0; i < Q.n; ++i) {
         Vec3 x = Q.p[i], y = Q.p[(i + 1) % Q.n];
-        double fx = f(x), fy = f(y);
+        double fx = fv[i], fy = fv[(i + 1) % Q.n];
         if (!((fx < 0 && fy > 0) || (fx > 0 && fy < 0))) continue;
         if (k == 2) return false;
         // Regula falsi, Illinois variant: the difference is smooth along most edges.
@@ -226,7 +241,7 @@ bool ridge(const Piece& Q, const Tri3& T, const Tri3& U, Vec3& a, Vec3& nrm) {
         }
         at[k++] = 0.5 * (x + y);
     }
-    if (k < 2) return false;
+    if (k < 2 || at[0] == at[1]) return false;
     const Vec3 n = cross(Q.p[1] - Q.p[0], Q.p[2] - Q.p[0]), line = at[1] - at[0];
     nrm = cross(n, line);
     const double ln = norm(nrm);

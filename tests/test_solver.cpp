@@ -732,6 +732,40 @@ TEST(SolverFarApart, ATargetFarAwayLooksOnlyNearItsSearchRadius) {
 // height: a needle standing on its edge 1 above a plane, its apex 1e-8 higher, is bounded by the
 // apex's distance 1 + 1e-8 (by hand: the height above the plane), not by its edge's 1, and by
 // no more than the apex's distance plus twice the tolerance; at the origin and 1e6 from it.
+// Two boxes stacked (B: separate shells, their shared facet y = -5.5 twice) against their union
+// (A, its faces split differently): by hand, the inner facet is min(x - 3.625, 3.875 - x, ...)
+// from A, largest, 0.125, along its mid-line x = 3.75 between the two opposite sides, which tie
+// there. The confirmation halves the facet, so its sub-triangles' corners lie on that line, where
+// d(., T) - d(., U) is 0 exactly: the ridge cut counted only strict sign changes, no piece on the
+// line could be cut between the sides, and the upper end stayed 1.2e-4 above the truth
+// (generate_pairs6.py "box_stack" 58688). Now corners on the ridge count as its points.
+TEST(ConfirmTop, RidgeThroughSubTriangleCornersIsCut) {
+    const TriangleMesh A = mesh_of(
+        {{3.625, -5.125, 8.0}, {3.625, -5.125, 8.5}, {3.875, -5.125, 8.5}, {3.875, -5.125, 8.0}, {3.625, -5.125, 9.0},
+         {3.875, -5.125, 9.0}, {3.625, -5.75, 8.0}, {3.875, -5.75, 8.0}, {3.875, -5.75, 9.0}, {3.625, -5.75, 9.0},
+         {3.75, -5.125, 8.0}, {3.75, -5.75, 8.0}, {3.625, -5.4375, 9.0}, {3.875, -5.4375, 9.0}, {3.875, -5.75, 8.5}},
+        {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}, {6, 7, 8}, {6, 8, 9}, {0, 10, 11}, {0, 11, 6}, {10, 3, 11}, {3, 7, 11},
+         {4, 12, 13}, {4, 13, 5}, {12, 9, 8}, {12, 8, 13}, {0, 6, 9}, {0, 9, 4}, {3, 2, 14}, {3, 14, 7}, {2, 5, 14}, {5, 8, 14}});
+    const TriangleMesh B = mesh_of(
+        {{3.625, -5.125, 8.0}, {3.625, -5.125, 9.0}, {3.875, -5.125, 8.0}, {3.875, -5.125, 9.0}, {3.625, -5.5, 8.0},
+         {3.875, -5.5, 8.0}, {3.625, -5.5, 9.0}, {3.875, -5.5, 9.0}, {3.625, -5.75, 8.0}, {3.875, -5.75, 8.0},
+         {3.875, -5.75, 9.0}, {3.625, -5.75, 9.0}},
+        {{0, 1, 2}, {1, 3, 2}, {4, 5, 6}, {5, 7, 6}, {0, 2, 4}, {2, 5, 4}, {1, 6, 7}, {1, 7, 3}, {0, 4, 6}, {0, 6, 1},
+         {2, 3, 5}, {3, 7, 5}, {4, 6, 7}, {4, 7, 5}, {8, 9, 10}, {8, 10, 11}, {4, 5, 8}, {5, 9, 8}, {6, 11, 10}, {6, 10, 7},
+         {4, 8, 11}, {4, 11, 6}, {5, 7, 9}, {7, 10, 9}});
+    Box3 box = A.bounds();
+    box.add(B.bounds());
+    for (Mode mode : {Mode::Paper, Mode::Fast}) {
+        HausdorffOptions opt;
+        opt.mode = mode;
+        const HausdorffResult r = hausdorff(A, B, opt);
+        EXPECT_EQ(r.b_to_a.distance, 0.125);
+        EXPECT_LE(r.b_to_a.lower, 0.125);
+        EXPECT_GE(r.b_to_a.upper, 0.125);
+        EXPECT_LE(r.b_to_a.upper - r.b_to_a.lower, 1e-9 * box.diagonal()) << "upper " << r.b_to_a.upper;
+    }
+}
+
 TEST(ConfirmTop, LongestEdgeBoundAddsTheHeight) {
     for (double far : {0.0, 1e6}) {
         SCOPED_TRACE("offset " + std::to_string(far));
