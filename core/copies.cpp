@@ -67,10 +67,13 @@ std::vector<uint8_t> copied_targets(const VoxelGrid& grid, int side, const std::
         }
     }
     if (first.empty()) return out;
-    for (size_t s = 0; s < B.num_triangles(); ++s) {
+    // Each key's targets are marked once, then the key is dropped: n copies of one triangle in
+    // both meshes cost n, not n^2.
+    for (size_t s = 0; s < B.num_triangles() && !first.empty(); ++s) {
         const auto it = first.find(key_of(B.corners(s)));
         if (it == first.end()) continue;
         for (uint32_t t = it->second; t != UINT32_MAX; t = next[t]) out[t] = 1;
+        first.erase(it);
     }
     return out;
 }
