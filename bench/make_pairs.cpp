@@ -36,40 +36,31 @@ using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
 // copy, float and edit: read and written in full double precision by the project's own reader
 // (OpenMesh's readers take coordinates as float: its "copy" would be the float one).
 static int exact_copy(const std::string& op, int argc, char** argv) {
-    hlens::TriangleMesh m;
     try {
-        m = hlens::load_mesh(argv[2]);
+        hlens::TriangleMesh m = hlens::load_mesh(argv[2]);
+        if (op == "float")
+            for (hlens::Vec3& p : m.positions) p = hlens::Vec3((float)p.x, (float)p.y, (float)p.z);
+        if (op == "edit" && argc == 6 && !m.positions.empty()) {
+            const double diag = m.bounds().diagonal(), radius = std::atof(argv[4]) * diag, offset = std::atof(argv[5]) * diag;
+            std::vector<hlens::Vec3> normal(m.positions.size(), hlens::Vec3(0, 0, 0));
+            for (size_t t = 0; t < m.num_triangles(); ++t) {  // area-weighted vertex normals
+                const auto c = m.corners(t);
+                const hlens::Vec3 n = hlens::cross(c[1] - c[0], c[2] - c[0]);
+                for (uint32_t i : m.triangles[t]) normal[i] += n;
+            }
+            const hlens::Vec3 centre = m.positions[0];
+            for (size_t v = 0; v < m.positions.size(); ++v) {
+                const double l = hlens::norm(normal[v]);
+                if (l > 0 && hlens::norm(m.positions[v] - centre) <= radius) m.positions[v] += normal[v] * (offset / l);
+            }
+        }
+        hlens::save_obj(m, argv[3]);
+        std::printf("%s: %zu vertices, %zu triangles\n", argv[3], m.positions.size(), m.num_triangles());
+        return 0;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "make_pairs: %s\n", e.what());
         return 2;
     }
-    if (op == "float")
-        for (hlens::Vec3& p : m.positions) p = hlens::Vec3((float)p.x, (float)p.y, (float)p.z);
-    if (op == "edit" && argc == 6 && !m.positions.empty()) {
-        const double diag = m.bounds().diagonal(), radius = std::atof(argv[4]) * diag, offset = std::atof(argv[5]) * diag;
-        std::vector<hlens::Vec3> normal(m.positions.size(), hlens::Vec3(0, 0, 0));
-        for (size_t t = 0; t < m.num_triangles(); ++t) {  // area-weighted vertex normals
-            const auto c = m.corners(t);
-            const hlens::Vec3 n = hlens::cross(c[1] - c[0], c[2] - c[0]);
-            for (uint32_t i : m.triangles[t]) normal[i] += n;
-        }
-        const hlens::Vec3 centre = m.positions[0];
-        for (size_t v = 0; v < m.positions.size(); ++v) {
-            const double l = hlens::norm(normal[v]);
-            if (l > 0 && hlens::norm(m.positions[v] - centre) <= radius) m.positions[v] += normal[v] * (offset / l);
-        }
-    }
-    FILE* f = std::fopen(argv[3], "w");
-    if (!f) {
-        std::fprintf(stderr, "make_pairs: cannot write %s\n", argv[3]);
-        return 2;
-    }
-    for (const hlens::Vec3& p : m.positions) std::fprintf(f, "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
-    for (const hlens::Tri& t : m.triangles) std::fprintf(f, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
-    const bool ok = std::fclose(f) == 0;
-    if (!ok) std::fprintf(stderr, "make_pairs: cannot write %s\n", argv[3]);
-    else std::printf("%s: %zu vertices, %zu triangles\n", argv[3], m.positions.size(), m.num_triangles());
-    return ok ? 0 : 2;
 }
 
 static double diagonal(const Mesh& m) {
