@@ -144,13 +144,20 @@ struct Projector {
 // T' past its tip, inside both lines to 9e-9, where the corner's quadratic is 2.3e-8 higher
 // (d^2 3.2e-7). Its bevel, the line through X across the wedge's bisector, leaves the region as it
 // is (the wedge lies on its inner side) and ends the tip at X, whatever the tolerances.
+// Where the lines meet at less than 1e-13 rad, their normals' sum is too much rounding to give
+// the bisector: `into`, a direction into the wedge from the source's corners, if the caller has
+// one. Without it a face region's tip 3.4e-15 rad wide had no bevel, and the crack rule, whose
+// margins over the region's lines alone reach that far, gave it the opposite wedge beyond the
+// tip: d^2 0 where it is 1 (generate_pairs12.py "flat_kite_diagonals" 1338, side B, target 6).
 constexpr double kBevelAngle = 0.1;
-void bevel(SourceRegion& r, size_t i, size_t j, Vec2 X) {
+void bevel(SourceRegion& r, size_t i, size_t j, Vec2 X, Vec2 into = {0, 0}) {
     const HalfPlane &p = r.planes[i], &q = r.planes[j];
     if (p.kind != HalfPlane::Line || q.kind != HalfPlane::Line) return;
-    const Vec2 s = p.n + q.n;  // along the wedge's bisector, into it; 2 sin(angle / 2) long
-    const double ls = norm(s);
-    if (!(ls < 2 * std::sin(0.5 * kBevelAngle) && ls > 1e-13)) return;
+    Vec2 s = p.n + q.n;  // along the wedge's bisector, into it; 2 sin(angle / 2) long
+    double ls = norm(s);
+    if (!(ls < 2 * std::sin(0.5 * kBevelAngle))) return;
+    if (!(ls > 1e-13)) s = into, ls = norm(into);
+    if (!(ls > 0)) return;
     HalfPlane h;
     h.n = s / ls;
     h.offset = dot(h.n, X);
@@ -288,7 +295,10 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     bevel(R[3], 0, 1, A), bevel(R[3], 0, 2, B);
     bevel(R[4], 0, 1, B), bevel(R[4], 0, 2, C);
     bevel(R[5], 0, 1, C), bevel(R[5], 0, 2, A);
-    bevel(R[6], 0, 2, A), bevel(R[6], 0, 1, B), bevel(R[6], 1, 2, C);
+    // The face region is the triangle A B C: at a tip, into it along its two sides.
+    auto unit = [](Vec2 v) { const double l = norm(v); return l > 0 ? v / l : Vec2{0, 0}; };
+    bevel(R[6], 0, 2, A, unit(B - A) + unit(C - A)), bevel(R[6], 0, 1, B, unit(A - B) + unit(C - B));
+    bevel(R[6], 1, 2, C, unit(A - C) + unit(B - C));
 }
 
 double source_distance2(const TargetFrame& F, const std::array<Vec3, 3>& s, Vec2 p) {

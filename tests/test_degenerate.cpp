@@ -3023,6 +3023,44 @@ TEST(Degenerate, SliverFaceRegionEndsAtItsTip) {
     EXPECT_EQ(off, 0);
 }
 
+// Generate_pairs12.py "flat_kite_diagonals" 1338 (side B, target 6, by hand): a coplanar sliver
+// source whose face region ends at its corner (0, 0) in a tip 7e-14 rad wide, too narrow for its
+// lines' normals to give a bevel, inserted into a target 1.5e-7 tall that lies beyond the tip,
+// where an earlier source's corner at (0, 0) ties with the sliver's. That region passed over, the
+// crack rule held the target to the face region's lines within kCluster (which, along a tip that
+// sharp, reaches 1e8 past it) and gave it the face region: d^2 0 where it is |p|^2. The tip's
+// bevel now comes from the sides' directions. The oracle: d^2 by brute force over both sources.
+TEST(Degenerate, FaceRegionTipTooSharpForItsNormalsStillEnds) {
+    const double m = 7.5e-8;
+    const TriangleMesh T = make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 2 * m, 0}}, {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{0, 0, 0}, {-1, 0.5, 0}, {-1, -0.5, 0},  // its corner region holds T'
+                                      {-12, -12 * m, 0}, {-7, -7 * m + 5e-13, 0}},
+                                     {{0, 1, 2}, {0, 3, 4}});
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    const SourceProjection sliver = project_source(fr, S.corners(1), 1);
+    const SourceRegion& face = sliver.regions.back();
+    ASSERT_EQ(face.kind, Region::abc);
+    // The premise: two of its lines meet with normals summing to less than 1e-13.
+    bool sharp = false;
+    for (size_t i = 0; i < 3; ++i)
+        for (size_t j = i + 1; j < 3; ++j) sharp |= norm(face.planes[i].n + face.planes[j].n) < 1e-13;
+    ASSERT_TRUE(sharp);
+    DomainMesh mesh(fr.ccw_corners());
+    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+        mesh.insert(project_source(fr, S.corners(s), s));
+        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
+    }
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 40, 1e-9), 0);
+    // On the sliver's lines 0.999 past its tip, inside T': d^2 = |p|^2 (frame units: T''s longest
+    // side is its unit).
+    const Vec3 w{0.999, 0.999 * m, 0};
+    const Vec2 beyond = fr.to_frame(w);
+    EXPECT_LT(region_margin(face, beyond), -0.5);
+    const int f = mesh.face_at(beyond);
+    ASSERT_GT(f, 0);
+    EXPECT_NEAR(mesh.faces()[f].poly(beyond), norm2(w) / (fr.scale * fr.scale), 1e-9);
+}
+
 // A sliver source perpendicular to T' and straddling its plane (generate_pairs7.py
 // "zero_area_in_closed_far" 2321, by hand): its long sides' planes are within 1e-12 of T''s, taken
 // as parallel to it, and its face region ran on past its end at (1, 0, 2.5), where a source above
