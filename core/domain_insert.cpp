@@ -240,11 +240,21 @@ bool DomainMesh::unfold_needles(uint64_t since) {
     return any;
 }
 
+// Arc e is straight, or curved off its chord by less than a tenth of the vertex tolerance: a
+// piece of a conic that is one line to the domain mesh's resolution, such as the double line where
+// an edge's quadratic meets a coplanar face's 0.
+bool DomainMesh::nearly_straight(int e) const {
+    const Edge& E = edges_[e];
+    if (E.curve.straight()) return true;
+    const double chord = norm(E.curve(E.z1) - E.curve(E.z0));
+    return chord > 0 && 1.5 * std::fabs(arc_geometry(e).segment) <= 0.1 * kVertexTolerance * chord;
+}
+
 // The folded needle of face f at the origin v of half-edge h, between its previous arc (from u)
 // and h (to w), if there is one: unfolded (unfold_needles). True if it was.
 bool DomainMesh::unfold_at(int f, int h) {
     int a = half_[h].prev, b = h;
-    if (!edges_[a >> 1].curve.straight() || !edges_[b >> 1].curve.straight() || (a >> 1) == (b >> 1) || half_[b].next == a ||
+    if (!nearly_straight(a >> 1) || !nearly_straight(b >> 1) || (a >> 1) == (b >> 1) || half_[b].next == a ||
         half_[a].origin == target(b))  // both arcs between the same two vertices: no base to cut
         return false;
     const ArcKind kind = edges_[a >> 1].kind;  // the chord across the base is of that kind
@@ -257,10 +267,13 @@ bool DomainMesh::unfold_at(int f, int h) {
     const double cr = cross(dw, du), length = std::min(lu, lw), width = -cr / std::max(lu, lw);
     if (!(cr < 0 && width <= kVertexTolerance && length >= 8 * kVertexTolerance)) return false;
     const int A = half_[a ^ 1].face, B = half_[b ^ 1].face;
-    if (A <= 0 || B <= 0 || A == B || A == f || B == f || !faces_[A].alive || !faces_[B].alive) return false;
+    if (A <= 0 || B <= 0 || A == f || B == f || !faces_[A].alive || !faces_[B].alive) return false;
+    // One neighbour on both sides: it takes the needle whole, so v must be the needle's alone.
+    if (A == B && half_[b ^ 1].next != (a ^ 1)) return false;
     // The longer arc split at the foot of the shorter one's end, unless that is its own end.
     if (std::fabs(lu - lw) > kTinyChord) {
         const int e = lu < lw ? (b >> 1) : (a >> 1);
+        if (!edges_[e].curve.straight()) return false;
         const Vec2 end = lu < lw ? pu : pw;  // the shorter arc's end, whose foot splits the longer
         const double z = straight_foot(e, end);
         if (!(z > edges_[e].z0 && z < edges_[e].z1)) return false;
@@ -280,7 +293,15 @@ bool DomainMesh::unfold_at(int f, int h) {
     for (int& l : faces_[f].loops)
         if (l == a || l == b) l = c0;
     int gone;
-    if (qa <= qb) {  // A keeps the needle: B's loop runs y -> x -> v in place of y -> v
+    if (A == B) {  // A's loop runs y -> x in place of y -> v -> x; both arcs and v go
+        half_[c1].face = A;
+        link(half_[tb].prev, c1), link(c1, half_[ta].next);
+        for (int& l : faces_[A].loops)
+            if (l == ta || l == tb) l = c1;
+        drop_edge(a >> 1);
+        vertices_[half_[b].origin].alive = false;
+        gone = b >> 1;
+    } else if (qa <= qb) {  // A keeps the needle: B's loop runs y -> x -> v in place of y -> v
         half_[c1].face = B, half_[a].face = B;
         link(half_[tb].prev, c1), link(c1, a), link(a, half_[tb].next);
         for (int& l : faces_[B].loops)

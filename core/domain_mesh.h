@@ -348,6 +348,7 @@ private:
     void give_to_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
     bool unfold_needles(uint64_t since);
     bool unfold_at(int f, int h);
+    bool nearly_straight(int e) const;
     void report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve);
 
     int add_vertex(Vec2 p);
