@@ -75,6 +75,9 @@ namespace {
 
 struct Projector {
     const TargetFrame& F;
+    // The rounding of the source's frame coordinates (SourceProjection::delta): a boundary plane
+    // parallel to T' no farther from it than this contains it.
+    double delta;
     // A 3D point into frame-scaled coordinates relative to the origin.
     Vec3 rel(const Vec3& p) const { return (p - F.origin) / F.scale; }
 
@@ -127,7 +130,15 @@ struct Projector {
         double ln = norm(n);
         if (ln <= 1e-12) {
             // Boundary plane parallel to the target: all or nothing, by the side the plane is on.
-            h.kind = off <= 1e-12 ? HalfPlane::All : HalfPlane::None;
+            // T' counts as inside it up to 1e-12 of T''s size, but no farther than the plane, at
+            // its tilt, may still reach T' (T' lies within 1 of the frame's origin) or the corners'
+            // rounding may put it: a box 1.2e-12 thin whose side walls stand under a target 2.4e-12
+            // up, the top edge of one 0.8e-12 below T' and parallel to it, had that edge's plane
+            // taken as holding T', and the wall's face region, empty on T', a strip of it
+            // (generate_pairs10.py "thin_box" 2884, side A, target 42, the paper's order: a step of
+            // 0.089 in d^2). A plane 4e-13 from parallel that crosses T' 0.2 from a corner stays
+            // inside as before ("zero_area_in_closed_far" 2321, bound_sliver_face_region).
+            h.kind = off <= std::min(1e-12, ln + delta) ? HalfPlane::All : HalfPlane::None;
             return h;
         }
         h.n = n / ln;
@@ -211,7 +222,7 @@ void project_source(const TargetFrame& F, const std::array<Vec3, 3>& s, uint32_t
     double reach = 0;
     for (const Vec3& c : s) reach = std::max(reach, norm(c - F.origin) / F.scale);
     out.delta = 64 * 0x1p-52 * (1 + reach);
-    Projector P{F};
+    Projector P{F, out.delta};
     const Vec3 &a = s[0], &b = s[1], &c = s[2];
     double longest2 = std::max({norm2(b - a), norm2(c - b), norm2(a - c)});
     Vec3 n = precise_normal(a, b, c);

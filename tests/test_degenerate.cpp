@@ -3061,6 +3061,38 @@ TEST(Degenerate, FaceRegionTipTooSharpForItsNormalsStillEnds) {
     EXPECT_NEAR(mesh.faces()[f].poly(beyond), norm2(w) / (fr.scale * fr.scale), 1e-9);
 }
 
+// Generate_pairs10.py "thin_box" 2884 (side A, target 42, the paper's order; two of its six
+// sources): a box 1.2e-12 thin against its own faces split differently. The target lies 2.4e-12 up;
+// the sources are side walls standing under it, and source 42's top edge, parallel to T', lies
+// 0.8e-12 below it. That edge's plane was taken as holding T' on both of its sides (a parallel
+// plane within 1e-12 of T' counted as containing it), so the wall's face region, empty on T', and
+// its top edge's region both covered the same strip; inserted after source 47, whose corner and
+// edge regions meet across T', the face region's line moved their boundary: d^2 stepped by 0.089
+// across it. The oracles: validate() (d^2 continuous across every arc) and d^2 by brute force.
+TEST(Degenerate, ParallelPlaneJustBelowTheTargetDoesNotHoldIt) {
+    const double z1 = 1.6072982894860258e-12, z2 = 3.2145965789720515e-12, x0 = 0.5965436220630986, x1 = 1.1930872441261973;
+    const TriangleMesh T = make_mesh({{0.894815433094648, 0, 2.4109474342290387e-12},
+                                      {1.789630866189296, 0, 2.4109474342290387e-12},
+                                      {1.789630866189296, 0.4505799015556974, 2.4109474342290387e-12}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{x0, 0, z1}, {x1, 0, z1}, {x1, 0, z2},  // source 47
+                                      {x0, 0, 0}, {x1, 0, z1}, {x0, 0, z1}},  // source 42: its top edge 0.8e-12 under T'
+                                     {{0, 1, 2}, {3, 4, 5}});
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    // The premise: the wall's face region is empty on T' (T' lies above the wall's top edge), and
+    // its top edge's region is not.
+    const SourceProjection wall = project_source(fr, S.corners(1), 1);
+    int none = 0;
+    for (const HalfPlane& h : wall.regions.back().planes) none += h.kind == HalfPlane::None;
+    EXPECT_GE(none, 1);
+    DomainMesh mesh(fr.ccw_corners());
+    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+        mesh.insert(project_source(fr, S.corners(s), s));
+        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
+    }
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 40, 1e-9), 0);
+}
+
 // A sliver source perpendicular to T' and straddling its plane (generate_pairs7.py
 // "zero_area_in_closed_far" 2321, by hand): its long sides' planes are within 1e-12 of T''s, taken
 // as parallel to it, and its face region ran on past its end at (1, 0, 2.5), where a source above
