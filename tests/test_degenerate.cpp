@@ -2985,6 +2985,15 @@ TEST(Degenerate, NeedleTurnedInsideOutGoesToANeighbour) {
     expect_constructions_hold(T, S, [](const TargetSolver& ts) { EXPECT_EQ(folded_vertices(*ts.domain_mesh()), 0); });
 }
 
+// The domain mesh of T' (frame fr) with every triangle of S inserted in order (the fast insertion),
+// validate() checked after each.
+void insert_all_validating(DomainMesh& mesh, const TargetFrame& fr, const TriangleMesh& S) {
+    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+        mesh.insert(project_source(fr, S.corners(s), s));
+        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
+    }
+}
+
 // Generate_pairs5.py "seam_strip" 211 (target 17 of B, the paper's order; four of its thirteen
 // sources, inserted in that order, make the same fault): the last source is a sliver whose face
 // region ends in a wedge of 6e-6 rad. Cut by its two lines alone, the wedge ran on 1.5e-4 of T' past
@@ -3007,10 +3016,7 @@ TEST(Degenerate, SliverFaceRegionEndsAtItsTip) {
                                      {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {5, 0, 3}});
     const TargetFrame fr = TargetFrame::make(T.corners(0));
     DomainMesh mesh(fr.ccw_corners());
-    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
-        mesh.insert(project_source(fr, S.corners(s), s));
-        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
-    }
+    insert_all_validating(mesh, fr, S);
     const Vec2 from{0.903708596838, 0.104072536004}, to{0.903708560008, 0.104072732584};
     int off = 0;
     for (int i = 0; i <= 20; ++i) {
@@ -3046,10 +3052,7 @@ TEST(Degenerate, FaceRegionTipTooSharpForItsNormalsStillEnds) {
         for (size_t j = i + 1; j < 3; ++j) sharp |= norm(face.planes[i].n + face.planes[j].n) < 1e-13;
     ASSERT_TRUE(sharp);
     DomainMesh mesh(fr.ccw_corners());
-    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
-        mesh.insert(project_source(fr, S.corners(s), s));
-        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
-    }
+    insert_all_validating(mesh, fr, S);
     EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 40, 1e-9), 0);
     // On the sliver's lines 0.999 past its tip, inside T': d^2 = |p|^2 (frame units: T''s longest
     // side is its unit).
@@ -3086,10 +3089,7 @@ TEST(Degenerate, ParallelPlaneJustBelowTheTargetDoesNotHoldIt) {
     for (const HalfPlane& h : wall.regions.back().planes) none += h.kind == HalfPlane::None;
     EXPECT_GE(none, 1);
     DomainMesh mesh(fr.ccw_corners());
-    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
-        mesh.insert(project_source(fr, S.corners(s), s));
-        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
-    }
+    insert_all_validating(mesh, fr, S);
     EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 40, 1e-9), 0);
 }
 
@@ -3111,10 +3111,7 @@ TEST(Degenerate, SliverSeenEdgeOnEndsItsFaceRegionAtItsLongestEdge) {
     for (const HalfPlane& h : sliver.regions.at(6).planes) lost += h.kind != HalfPlane::Line;
     EXPECT_EQ(lost, 2);
     DomainMesh mesh(fr.ccw_corners());
-    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
-        mesh.insert(project_source(fr, S.corners(s), s));
-        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
-    }
+    insert_all_validating(mesh, fr, S);
     EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 40, 1e-9), 0);
 }
 
