@@ -349,6 +349,7 @@ private:
     bool unfold_needles(uint64_t since);
     bool unfold_at(int f, int h);
     bool nearly_straight(int e) const;
+    bool straight_face_range(int f, const Quadratic2& g, const Box2& b, double& lo, double& hi) const;
     void report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve);
 
     int add_vertex(Vec2 p);

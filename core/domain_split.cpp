@@ -483,6 +483,17 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         Interval r = g.range(b.lo, b.hi);
         if (r.lo > kZero) { out.push_back({f, 1}); return; }
         if (r.hi < -kZero) { out.push_back({f, -1}); return; }
+        // The box holds more than the face: a curve through a corner of a straight-sided face, the
+        // rest of it on one side, may cross the box beside it. Decomposed, such a conic is no
+        // more precise than its centre is near: a line pair whose centre lay 4e6 from T', its
+        // quadratic part's rounding moving the near line by 1e-4, crossed T' where it only touches
+        // it, and most of T' went to a source whose d^2 there is 4e6 higher (generate_pairs13.py
+        // "ties_cube_center" 292, side A, target 4: a target with a corner at a cube's centre, where
+        // its faces tie; the debugger's construction, to the end). Its exact range over the face:
+        if (double lo, hi; straight_face_range(f, g, b, lo, hi)) {
+            if (lo >= -kZero && hi > kZero) { out.push_back({f, 1}); return; }
+            if (hi <= kZero && lo < -kZero) { out.push_back({f, -1}); return; }
+        }
     }
     if (!g_in.is_linear() && split_by_line_pair(f, g, l2_rounding, out)) return;
     SplitCall s(f, g, g_in.is_linear(), tmp_);
@@ -496,6 +507,30 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
     }
     insert_chords(s);                        // 4.
     rebuild_split_faces(s, out);             // 5.
+}
+
+// The least and greatest values of g over face f if its arcs are all straight (false otherwise): at
+// its vertices, where g has an extremum along an arc, and at g's centre where g is definite and
+// the centre lies in the face's box `b` (a quadratic has no other extremum; taking the box for the
+// face only widens the range).
+bool DomainMesh::straight_face_range(int f, const Quadratic2& g, const Box2& b, double& lo, double& hi) const {
+    lo = HUGE_VAL, hi = -HUGE_VAL;
+    bool straight = true;
+    auto take = [&](double v) { lo = std::min(lo, v), hi = std::max(hi, v); };
+    for_each_half_edge(f, [&](int h) {
+        if (!straight || !edges_[h >> 1].curve.straight()) { straight = false; return; }
+        const Vec2 p = vertices_[half_[h].origin].p, u = vertices_[target(h)].p - p;
+        const double A = g.a * u.x * u.x + 2 * g.b * u.x * u.y + g.c * u.y * u.y, B = dot(g.gradient(p), u);
+        take(g(p));
+        if (A != 0 && -B / (2 * A) > 0 && -B / (2 * A) < 1) take(g(p + u * (-B / (2 * A))));
+    });
+    if (!straight || !(lo <= hi)) return false;
+    const double det = g.a * g.c - g.b * g.b;
+    if (det > 0) {
+        const Vec2 x{(g.b * g.e - g.c * g.d) / det, (g.b * g.d - g.a * g.e) / det};
+        if (x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y) take(g(x));
+    }
+    return std::isfinite(lo) && std::isfinite(hi);
 }
 
 // g = 0 a line pair crossing on or near the face (within kOffCurve of its box): the face is cut by

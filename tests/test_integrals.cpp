@@ -101,6 +101,23 @@ TEST(DomainSplit, LinePairCentredOnTheBoundary) {
     }
 }
 
+// A line pair whose centre lies 4e6 from the face, touching it at a corner (generate_pairs13.py
+// "ties_cube_center" 292, side A, target 4, the debugger's construction: the target's corner at a
+// cube's centre, two of the cube's faces' quadratics, 2^43 there in frame units, differing by
+// g below, scaled). On T' (0 <= y <= x, x <= 1) g = 2xy - 8388608.03 x + 3.8e-4 y (to 1e-10) is
+// negative but at the corner (0, 0), where it is 0: by hand, -8388608 x + 2xy + 3.8e-4 y <= x
+// (-8388606 + 3.8e-4) < 0 for x > 0. Decomposed, the curve's near line moved 1e-4 with the
+// rounding of the quadratic part, and the split cut T' along y = 3.7e-5 into two pieces of
+// opposite signs: most of it went to the face whose d^2 is 4e6 higher.
+TEST(DomainSplit, LinePairFarAwayTouchingACorner) {
+    DomainMesh m({Vec2{0, 0}, Vec2{1, 0}, Vec2{0.50000000000000011, 0.50000000000000011}});
+    const Quadratic2 g{9.0101925920293979e-11, 1.0000000000000002, -9.0101925920293979e-11, -4194304.014410682, 0.00018895696848630905, 0};
+    const auto pieces = m.split_face(1, g);
+    ASSERT_EQ(pieces.size(), 1u);
+    EXPECT_EQ(pieces[0].sign, -1);
+    EXPECT_NEAR(m.face_area(pieces[0].face), 0.25, 1e-15);
+}
+
 // A face's edge along one line of a line pair (independent pair "fan" 5577: two nearly coplanar
 // sources sharing an edge): g = (x + y - 1 + delta)(x - y - 1/5) on the unit right triangle, whose
 // hypotenuse lies on (or delta off) the first line. Along it g is rounding noise times the second
