@@ -75,8 +75,9 @@ namespace {
 
 struct Projector {
     const TargetFrame& F;
-    // The rounding of the source's frame coordinates (SourceProjection::delta): a boundary plane
-    // parallel to T' no farther from it than this contains it.
+    // The rounding of the source's frame coordinates (SourceProjection::delta): with the tilt of a
+    // boundary plane taken as parallel to T', how far T' may lie outside it and still count as
+    // inside (halfspace).
     double delta;
     // A 3D point into frame-scaled coordinates relative to the origin.
     Vec3 rel(const Vec3& p) const { return (p - F.origin) / F.scale; }
