@@ -32,11 +32,7 @@ double min_on_unit_square(const Quadratic2& q) {
             if (x > 0 && x < 1) m = std::min(m, q({x, s}));
         }
     }
-    const double det = q.a * q.c - q.b * q.b;
-    if (q.a > 0 && det > 0) {
-        const Vec2 x{(q.b * q.e - q.c * q.d) / det, (q.b * q.d - q.a * q.e) / det};
-        if (x.x > 0 && x.x < 1 && x.y > 0 && x.y < 1) m = std::min(m, q(x));
-    }
+    if (Vec2 x; q.a > 0 && q.centre(x) && x.x > 0 && x.x < 1 && x.y > 0 && x.y < 1) m = std::min(m, q(x));
     return std::max(m, 0.0);
 }
 
@@ -46,6 +42,21 @@ std::string Quadratic2::to_string() const {
     return buf;
 }
 
+
+Interval range_along(const Quadratic2& q, Vec2 o, Vec2 u, double lo, double hi) {
+    const double A = q.a * u.x * u.x + 2 * q.b * u.x * u.y + q.c * u.y * u.y, B = dot(q.gradient(o), u), C = q(o);
+    auto at = [&](double t) { return (A * t + B) * t + C; };
+    const double vlo = at(lo), vhi = at(hi);
+    Interval r{std::min(vlo, vhi), std::max(vlo, vhi)};
+    if (A != 0) {
+        const double t = -B / (2 * A);
+        if (t > lo && t < hi) {
+            if (A < 0) r.hi = std::max(r.hi, at(t));
+            else r.lo = std::min(r.lo, at(t));
+        }
+    }
+    return r;
+}
 
 Quadratic2 half_plane(Vec2 n, double offset) {
     Quadratic2 q;

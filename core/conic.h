@@ -50,6 +50,13 @@ struct Quadratic2 {
         return std::max(s, std::fabs(f));
     }
     Interval range(Vec2 lo, Vec2 hi) const;  // contains q over the box [lo, hi]
+    // Where q's gradient vanishes, if its quadratic part is definite (a c > b^2): false otherwise.
+    bool centre(Vec2& x) const {
+        const double det = a * c - b * b;
+        if (!(det > 0)) return false;
+        x = {(b * e - c * d) / det, (b * d - a * e) / det};
+        return true;
+    }
     bool is_linear() const { return a == 0 && b == 0 && c == 0; }
     double quad_scale() const { return std::max({std::fabs(a), std::fabs(b), std::fabs(c)}); }  // of the quadratic part
     std::string to_string() const;
@@ -99,6 +106,9 @@ inline double unit_box_bound(const Quadratic2& q) {
 
 // The line n.x = offset as a linear quadratic (f >= 0 on the side n points to).
 Quadratic2 half_plane(Vec2 n, double offset);
+// The least and greatest values of q(o + t u) for t in [lo, hi] (a quadratic A t^2 + B t + C in t:
+// at the ends, and at its vertex where that lies between them and is of the kind asked for).
+Interval range_along(const Quadratic2& q, Vec2 o, Vec2 u, double lo, double hi);
 
 // p(z) = (n0 + n1 z + n2 z^2) / (w0 + w1 z + w2 z^2); w > 0 on the arcs we build.
 struct RationalCurve {

@@ -30,18 +30,6 @@ namespace {
 constexpr double kNowhere = 1e-15;
 constexpr double kRegionSlack = 1e-9;  // regions and boxes widened by this (frame units, T' of unit size)
 
-// The largest value of g(o + t u) for t in [lo, hi]: a quadratic A t^2 + B t + C in t.
-double max_along(const Quadratic2& g, Vec2 o, Vec2 u, double lo, double hi) {
-    const double A = g.a * u.x * u.x + 2 * g.b * u.x * u.y + g.c * u.y * u.y, B = dot(g.gradient(o), u), C = g(o);
-    auto at = [&](double t) { return (A * t + B) * t + C; };
-    double m = std::max(at(lo), at(hi));
-    if (A < 0) {
-        const double t = -B / (2 * A);
-        if (t > lo && t < hi) m = std::max(m, at(t));
-    }
-    return m;
-}
-
 // [lo, hi] of the line o + t u clipped by the half-plane (widened by kRegionSlack: the regions'
 // normals have unit length, regions.cpp); false if empty.
 bool clip_param(const HalfPlane& hp, Vec2 o, Vec2 u, double& lo, double& hi) {
@@ -269,9 +257,7 @@ bool DomainMesh::region_nowhere_nearer(int F, const SourceRegion& reg, const Box
                  {std::min(fb.hi.x, rbox.hi.x) + kRegionSlack, std::min(fb.hi.y, rbox.hi.y) + kRegionSlack}};
     if (b.lo.x > b.hi.x || b.lo.y > b.hi.y) return true;  // F's box misses R's
     if (g.range(b.lo, b.hi).hi <= kNowhere) return true;
-    const double det = g.a * g.c - g.b * g.b;
-    if (g.a < 0 && det > 0) {  // strictly concave: its centre, if in the box
-        const Vec2 x{(g.b * g.e - g.c * g.d) / det, (g.b * g.d - g.a * g.e) / det};
+    if (Vec2 x; g.a < 0 && g.centre(x)) {  // strictly concave: its centre, if in the box
         const bool in_r = x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y && in_region(reg, x, kRegionSlack);
         if (in_r && !(g(x) <= kNowhere)) return false;
     }
@@ -287,7 +273,7 @@ bool DomainMesh::arcs_nowhere_nearer(const SourceRegion& reg, const Quadratic2& 
             double lo = 0, hi = 1;
             bool in = true;
             for (const HalfPlane& hp : reg.planes) in = in && clip_param(hp, pa, pb - pa, lo, hi);
-            if (in && !(max_along(g, pa, pb - pa, lo, hi) <= kNowhere)) return false;
+            if (in && !(range_along(g, pa, pb - pa, lo, hi).hi <= kNowhere)) return false;
             continue;
         }
         if (boxes_miss(arc.box, b)) continue;
@@ -359,7 +345,7 @@ bool DomainMesh::lines_nowhere_nearer(const SourceRegion& reg, const Quadratic2&
         for (const HalfPlane& other : reg.planes)
             if (&other != line[j] && !clip_param(other, o[j], u[j], lo, hi)) { empty = true; break; }
         if (empty) continue;
-        if (!(max_along(g, o[j], u[j], lo, hi) <= kNowhere)) return false;
+        if (!(range_along(g, o[j], u[j], lo, hi).hi <= kNowhere)) return false;
     }
     return true;
 }

@@ -519,17 +519,12 @@ bool DomainMesh::straight_face_range(int f, const Quadratic2& g, const Box2& b, 
     auto take = [&](double v) { lo = std::min(lo, v), hi = std::max(hi, v); };
     for_each_half_edge(f, [&](int h) {
         if (!straight || !edges_[h >> 1].curve.straight()) { straight = false; return; }
-        const Vec2 p = vertices_[half_[h].origin].p, u = vertices_[target(h)].p - p;
-        const double A = g.a * u.x * u.x + 2 * g.b * u.x * u.y + g.c * u.y * u.y, B = dot(g.gradient(p), u);
-        take(g(p));
-        if (A != 0 && -B / (2 * A) > 0 && -B / (2 * A) < 1) take(g(p + u * (-B / (2 * A))));
+        const Vec2 p = vertices_[half_[h].origin].p;
+        const Interval r = range_along(g, p, vertices_[target(h)].p - p, 0, 1);
+        take(r.lo), take(r.hi);
     });
     if (!straight || !(lo <= hi)) return false;
-    const double det = g.a * g.c - g.b * g.b;
-    if (det > 0) {
-        const Vec2 x{(g.b * g.e - g.c * g.d) / det, (g.b * g.d - g.a * g.e) / det};
-        if (x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y) take(g(x));
-    }
+    if (Vec2 x; g.centre(x) && x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y) take(g(x));
     return std::isfinite(lo) && std::isfinite(hi);
 }
 

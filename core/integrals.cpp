@@ -334,11 +334,7 @@ Interval convex_range(const Quadratic2& P, const Box2& b) {
     for (const Vec2& p : c) hi = std::max(hi, P(p));
     // The smallest: at the interior critical point if there is one inside, else on an edge (where
     // the critical points form a line, that line also meets the boundary at the same value).
-    const double det = P.a * P.c - P.b * P.b;
-    if (det > 0) {
-        const Vec2 m{(P.b * P.e - P.c * P.d) / det, (P.b * P.d - P.a * P.e) / det};
-        if (m.x >= b.lo.x && m.x <= b.hi.x && m.y >= b.lo.y && m.y <= b.hi.y) lo = P(m);
-    }
+    if (Vec2 m; P.centre(m) && m.x >= b.lo.x && m.x <= b.hi.x && m.y >= b.lo.y && m.y <= b.hi.y) lo = P(m);
     for (int k = 0; k < 4; ++k) {  // P along an edge p + s u, s in [0, 1]: a 1D convex quadratic
         const Vec2 p = c[k], u = c[(k + 1) % 4] - c[k];
         const double qa = P.a * u.x * u.x + 2 * P.b * u.x * u.y + P.c * u.y * u.y;
