@@ -89,7 +89,7 @@ public:
         double tie_slack = 0;
     };
     struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0, line_pairs = 0, hole_chords = 0,
-                   departures = 0, unfolds = 0; };
+                   departures = 0, unfolds = 0, side_change_cuts = 0; };
 
     // Events a caller may watch while a source is inserted (all optional).
     struct Listener {
@@ -375,6 +375,9 @@ private:
     bool mixed_cycle(const SplitCall& s);
     void hook_paths(int face, const std::vector<int>& hes, int force_hook, int force_wedge);
     void rehook_chords(SplitCall& s);
+    void undo_chords(int f, size_t nv, size_t ne);
+    bool side_change_chords(const SplitCall& s, std::vector<Chord>& out) const;
+    void cut_at_side_changes(SplitCall& s, size_t nv, size_t ne);
     void insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& path_edges, bool closed_new);
     void rebuild_faces(const std::vector<int>& hes, int reuse, std::vector<int>& fids, bool split = false);
     void remove_edge(int e);

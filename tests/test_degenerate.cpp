@@ -3283,3 +3283,66 @@ TEST(Degenerate, ConeOverAFlatFanIsConfirmedToTheTolerance) {
         }
     }
 }
+
+// Generate_pairs12.py "snapped_corners" 3929 (target 0 of A, the paper's order): three fans of B
+// whose apexes lie within 6e-8 of T''s corner (1e-9 of the coordinates, 530 from the origin).
+// After six sources one domain is two sectors of T' joined at that corner, where two other
+// domains' tips end 4e-8 and 6e-8 below it; the seventh source's face region has its apex there,
+// and its line through the corner, 5e-9 and 8e-9 from those tips, crosses one sector. Its chords
+// paired the line's far crossing with the farther tip, across the boundary, and the face stayed one
+// piece inside the region: the sector outside it took the plane's quadratic, up to 0.0019 below
+// d^2. The face is now cut between the places where its loop changes side (domain_split.cpp,
+// cut_at_side_changes). The oracles: validate() after every insertion (d^2 continuous across every
+// arc) and d^2 by brute force on a grid over T'.
+TEST(Degenerate, LineThroughAPinchOfTipsCutsTheSectorItCrosses) {
+    const TriangleMesh T = make_mesh({{-18.565128038122328, -297.00825265362465, 529.8912198304737},
+                                      {-18.100143653174328, -297.11907737825027, 529.944794501965},
+                                      {-18.939175850394992, -297.2063596082291, 529.946080629697}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{-18.56512803725182, -297.0082526539985, 529.8912198308277},
+                                      {-18.366120380714463, -297.6327492915107, 529.8122805746442},
+                                      {-18.99930278493582, -297.1499941743587, 530.0252493811922},
+                                      {-18.541970662939544, -296.26859427920243, 529.6856199228521},
+                                      {-19.036828415488554, -297.38961851989444, 530.0097589053138},
+                                      {-18.652532875315934, -297.3305646131157, 530.1093920066279},
+                                      {-18.56512803886199, -297.00825265424453, 529.8912198291928},
+                                      {-18.8750942640564, -297.2406359806268, 529.9686918628802},
+                                      {-18.89713980989714, -296.1074933437371, 529.8665091159793},
+                                      {-19.03965541878976, -297.3610072109301, 529.9665296569323},
+                                      {-18.584922412992622, -297.2655694072797, 530.0767200537398}},
+                                     {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {6, 7, 8}, {6, 8, 9}, {6, 9, 10}});
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    DomainMesh mesh(fr.ccw_corners());
+    insert_all_validating(mesh, fr, S);
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 60, 1e-9), 0);
+}
+
+// Generate_pairs9.py "shared_edge_tiny" 3042 (target 1 of B, nearest first): a target 5.8e-10
+// across, 160 from the origin, 1e-11 from an edge that four sources share. Every region line and
+// the planes' line pair pass within 1e-7 of one point of T', where a sliver of the first source's
+// edge region ends 1.2e-7 from the fourth source's face region line: the face across that line is
+// two lobes joined there. One line of the pair (the fourth source's plane against the third's)
+// crosses both lobes and the sliver's tip 2.5e-8 past it; its chord ended at the tip, and the lobe
+// beyond it went with the other whole, on the wrong side of the line: the fourth source's plane
+// kept where the third's is nearer, 0.0019 below d^2 (frame units, where d^2 is 5e-4). Cut between
+// the places where the face's loop changes side, at the vertex nearest the line within the
+// resolution (domain_split.cpp, cut_at_side_changes), it holds. The oracles: validate() after
+// every insertion and d^2 by brute force on a grid over T' (the frame's coordinates round by
+// 2.5e-5 of T', and d^2 is up to 1: it holds to 1e-4 (1 + d^2)).
+TEST(Degenerate, LineThroughASliversTipCutsBothLobes) {
+    const TriangleMesh T = make_mesh({{-106.80828465664456, -1.7713327181354768, -159.79282704517885},
+                                      {-106.80828465681455, -1.7713327182971395, -159.79282704465285},
+                                      {-106.80828465655517, -1.7713327178102756, -159.79282704473803}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{-106.90653066044044, -1.7484272539204178, -159.95582334198215},
+                                      {-106.71003865268946, -1.7942381821459563, -159.62983074785836},
+                                      {-106.61062500075934, -2.0079187508242375, -159.72835151844512},
+                                      {-106.994803038499, -1.5690010527052882, -159.88259805420168},
+                                      {-107.023176449152, -1.5857393473990289, -159.9619676833147},
+                                      {-106.69854703504177, -1.6388406214182891, -159.85399547093681}},
+                                     {{1, 0, 4}, {1, 0, 3}, {0, 1, 2}, {1, 0, 5}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    DomainMesh mesh(fr.ccw_corners());
+    insert_all_validating(mesh, fr, S);
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-4), 0);
+}
