@@ -308,7 +308,7 @@ private:
     bool pinched_lobes(int f, int va, int vb, int& ha, int& hb) const;
     bool once_on_one_loop(int f, int va, int vb, int& ha, int& hb) const;
     void pinch_face(int va, int vb, int ha, int hb);
-    void insert_chords(SplitCall& s);
+    bool insert_chords(SplitCall& s);
     bool flat_tip(int v, Vec2 curve_end) const;
     void rebuild_split_faces(SplitCall& s, std::vector<SplitPiece>& out);
     int side_of_piece(SplitCall& s, int face, const std::vector<int>& loop_hes) const;
@@ -374,7 +374,7 @@ private:
     int hook_wedge(int hin);
     bool mixed_cycle(const SplitCall& s);
     void hook_paths(int face, const std::vector<int>& hes, int force_hook, int force_wedge);
-    void rehook_chords(SplitCall& s);
+    bool rehook_chords(SplitCall& s);
     void undo_chords(int f, size_t nv, size_t ne);
     bool side_change_chords(const SplitCall& s, std::vector<Chord>& out) const;
     void cut_at_side_changes(SplitCall& s, size_t nv, size_t ne);

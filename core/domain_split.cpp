@@ -506,8 +506,7 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         return;
     }
     const size_t nv = vertices_.size(), ne = edges_.size();
-    insert_chords(s);                        // 4.
-    if (mixed_cycle(s)) cut_at_side_changes(s, nv, ne);
+    if (insert_chords(s)) cut_at_side_changes(s, nv, ne);  // 4.
     rebuild_split_faces(s, out);             // 5.
 }
 
@@ -1573,20 +1572,22 @@ void DomainMesh::hook_paths(int face, const std::vector<int>& hes, int force_hoo
 // where there are two (generate_pairs3.py "needle_fan" 35075, nearest first: a strip 4e-6 wide and
 // 0.11 long where a needle's edge is nearer went to the next needle's, d^2 up to 9 times too high).
 // Such a loop is certain; the hooks are then tried in their other wedges, one at a time, and the
-// first linking whose every loop keeps to one side is kept (else the first one is).
-void DomainMesh::rehook_chords(SplitCall& s) {
+// first linking whose every loop keeps to one side is kept (else the first one is, and false).
+bool DomainMesh::rehook_chords(SplitCall& s) {
     const std::vector<int>& hes = tmp_.hes;
     for (size_t k = 0; k < tmp_.hook_wedges.size(); ++k)
         for (int w = 0; w < tmp_.hook_wedges[k]; ++w) {
             if (w == tmp_.hook_taken[k]) continue;
             hook_paths(s.f, hes, (int)k, w);
-            if (!mixed_cycle(s)) { ++stats_.rehooks; return; }
+            if (!mixed_cycle(s)) { ++stats_.rehooks; return true; }
         }
     hook_paths(s.f, hes, -1, -1);
+    return false;
 }
 
-// 4. Insert the chords, each as a path of well-conditioned arcs.
-void DomainMesh::insert_chords(SplitCall& s) {
+// 4. Insert the chords, each as a path of well-conditioned arcs. True if a loop is left on both
+// sides of the curve (mixed_cycle) however they are hooked.
+bool DomainMesh::insert_chords(SplitCall& s) {
     std::vector<int>& hes = tmp_.hes;
     const size_t boundary = hes.size();
     tmp_.links_before.resize(2 * boundary);
@@ -1638,7 +1639,7 @@ void DomainMesh::insert_chords(SplitCall& s) {
         ++stats_.splits;
     }
     tmp_.recording_hooks = false;
-    if (mixed_cycle(s)) rehook_chords(s);
+    return mixed_cycle(s) && !rehook_chords(s);
 }
 
 // The chords insert_chords added taken out again: the face's links as they were before them, and
@@ -1666,11 +1667,8 @@ bool DomainMesh::side_change_chords(const SplitCall& s, std::vector<Chord>& out)
     out.clear();
     if (!s.g_linear || faces_[s.f].loops.size() != 1) return false;
     const double certain = certain_side(s);
-    std::vector<int> loop;
-    for (int h = faces_[s.f].loops[0], guard = 0;; h = half_[h].next) {
-        loop.push_back(h);
-        if (half_[h].next == faces_[s.f].loops[0] || ++guard > 100000) break;
-    }
+    std::vector<int> loop;  // the one loop, in order
+    collect_half_edges(s.f, loop);
     const int n = (int)loop.size();
     std::vector<int> sign(n, 0);
     for (int i = 0; i < n; ++i) {
@@ -1727,8 +1725,7 @@ void DomainMesh::cut_at_side_changes(SplitCall& s, size_t nv, size_t ne) {
         std::vector<Chord> first = tmp_.chords;
         tmp_.chords = chords;
         const size_t nv2 = vertices_.size(), ne2 = edges_.size();
-        insert_chords(s);
-        if (!mixed_cycle(s)) { ++stats_.side_change_cuts; return; }
+        if (!insert_chords(s)) { ++stats_.side_change_cuts; return; }
         undo_chords(s.f, nv2, ne2);
         tmp_.chords = first;
     }
