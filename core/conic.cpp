@@ -412,12 +412,17 @@ void decompose_parabolic(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec
         // vertex 1.7e-6 off at Y = 0.5, past kOffCurve from the vertex of the face that ends the
         // chord there: no chord, and a sliver 0.2 long, where the other source is nearer by up to
         // 1e-6 in d^2, went to the farther one. Only where that term is a correction (the centre of
-        // the conic, -b2 / l2, lies far along the axis) and l2 is no noise (l2_noise).
-        if (!l2_noise) {
+        // the conic, -b2 / l2, lies far along the axis) and l2 is no noise (l2_noise), or is noise
+        // that would still move the vertex by more than 1e-9 over T': the computed q has it, and the
+        // faces' polynomials are the computed ones. Generate_pairs7.py "spike_grid" 9835: a nearly
+        // double line along an edge of T' (l2 = 1.3e-12 within its rounding, b2 = -3.7e-10), dropped
+        // whole it moved the vertex 1.2e-3 and a chord ran out to it: d^2 stepped by 6e-7.
+        {
             const double Ylo = std::min(0.0, e2.x) + std::min(0.0, e2.y), Yhi = std::max(0.0, e2.x) + std::max(0.0, e2.y);
             const double Ya0 = -(l1 * Xa * Xa + 2 * b1 * Xa + f) / (2 * b2);
             const double Yr = std::isfinite(Ya0) ? std::min(std::max(Ya0, Ylo), Yhi) : 0.5 * (Ylo + Yhi);
-            if (2 * std::fabs(l2 * Yr) <= std::fabs(b2)) {
+            const double ymax = std::max(std::fabs(Ylo), std::fabs(Yhi));
+            if ((!l2_noise || std::fabs(l2) * ymax * ymax > 2e-9 * std::fabs(b2)) && 2 * std::fabs(l2 * Yr) <= std::fabs(b2)) {
                 b2 += l2 * Yr;
                 f -= l2 * Yr * Yr;
             }

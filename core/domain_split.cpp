@@ -282,7 +282,21 @@ void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vect
         // inside a face, where a corner of the source is nearer; its point counted as inside the
         // ellipse's own loop, the smaller, which took the hole: the face kept its outer loop alone,
         // the ellipse became a piece of no area, and the source's domain was lost, d^2 4% high.)
-        const Edge& E = edges_[cycles[hi] >> 1];
+        // The point is the middle of the hole's longest arc (by its ends), which is farthest from
+        // where the hole touches the outer loop at a pinch: the middle of an arc 1.7e-8 long
+        // between two vertices the outer loop passes through too counted as outside (generate_pairs11.py
+        // "overlap_retri" 3145, nearest first: a coplanar copy's domain wrapped around another's
+        // wedge, pinched at T''s corner; the wedge's other side, with an area of -3.5e-7, became a
+        // piece of its own).
+        int hp = cycles[hi];
+        double longest = -1;
+        for (int h = cycles[hi], guard = 0;; ) {
+            const double len = norm2(vertices_[half_[half_[h].next].origin].p - vertices_[half_[h].origin].p);
+            if (len > longest) { longest = len; hp = h; }
+            h = half_[h].next;
+            if (h == cycles[hi] || ++guard > 1000000) break;
+        }
+        const Edge& E = edges_[hp >> 1];
         Vec2 p = E.curve(0.5 * (E.z0 + E.z1));
         int best = -1;
         double best_area = HUGE_VAL;
