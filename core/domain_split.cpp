@@ -483,6 +483,15 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         // parallel edge is nearer kept the farther one, d^2 2.3 times the truth).
         const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
         if ((std::fabs(g.a) + 2 * std::fabs(g.b) + std::fabs(g.c)) * m * m <= 1e-3 * kZero) g.a = g.b = g.c = 0;
+        // So is one within the rounding of the operands' quadratic parts (l2_rounding: each
+        // coefficient a few ulps of `quad` off), however far above kZero that is once g is scaled to
+        // unit size: two parallel planes 3.6e-11 apart, standing on T', differ by 1.8e-11 in their
+        // linear parts and by 5e-16 (4.5 ulps of their quadratic parts, 0.5) in their quadratic
+        // parts; kept, that noise was a conic 2.8e-5 of g, no chord was found across the strip of
+        // the one plane's face region, and the strip went whole to the farther plane, 3.7e-9
+        // relative above d^2 over half of it (generate_pairs14.py "fin_plate" 3204: a double-walled
+        // fin). Dropped, g moves by less than 4 such ulps over T'.
+        if (std::max({std::fabs(g.a), std::fabs(g.b), std::fabs(g.c)}) <= l2_rounding) g.a = g.b = g.c = 0;
         // A conic that is straight across the face, to a thousandth of kOnCurve, is its tangent
         // line there: about the box's centre the quadratic part moves g by at most `bend`, and the
         // curve by that over the gradient. A hyperbola 1e4 from T' whose branch crosses a face

@@ -3445,3 +3445,29 @@ TEST(Degenerate, HoleTouchingItsFaceAtTwoPinchesStaysAHole) {
     insert_all_validating(mesh, fr, S);
     EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-9), 0);
 }
+
+// Generate_pairs14.py "fin_plate" 3204 (target 0 of A; two of its sources, one triangle of each wall
+// of a double-walled fin, 3.6e-11 apart, standing on T'): where the nearer wall's face region meets
+// the farther one's domain, g (their difference) is 1.8e-11 in its linear part and 5e-16 in its
+// quadratic part, rounding of the two quadratic parts (0.5). Scaled to unit size that noise was a
+// conic of 2.8e-5, no chord was found across the strip of the face region, and the strip went whole
+// to the farther wall, 7e-13 (3.7e-9 relative) above d^2 over half of it, in every order. The
+// quadratic part within its rounding is now dropped: the curve is the line of the rest. Oracle:
+// brute force on a grid, to 1e-13 (validate() passes either way: its tolerance is 1e-7 relative).
+TEST(Degenerate, ParallelWallsNoiseQuadraticPartIsDropped) {
+    const TriangleMesh T = make_mesh({{0.0, 0.0, 0.0},
+                                      {-0.14924011367722434, 0.6970775978904878, 0.7012918158575904},
+                                      {0.9237222516313933, -0.1547628784230537, 0.35040783852996216}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{0.11151926976250412, 0.12755201252064616, 0.6099165687246886},
+                                      {0.07420924134319803, 0.30182141199326806, 0.785239522689086},
+                                      {0.28791696696306146, 0.47759889294576807, 0.2995119393665218},
+                                      {0.11151926979597457, 0.12755201251503842, 0.6099165687373853},
+                                      {0.07420924137666848, 0.3018214119876603, 0.785239522701783},
+                                      {0.2879169669965319, 0.47759889294016034, 0.2995119393792186}},
+                                     {{0, 1, 2}, {3, 5, 4}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    DomainMesh mesh(fr.ccw_corners());
+    insert_all_validating(mesh, fr, S);
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-13), 0);
+}
