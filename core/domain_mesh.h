@@ -266,6 +266,7 @@ private:
     static constexpr double kCluster = kVertexTolerance;
 
     template <class Fn> void for_each_half_edge(int f, Fn&& fn) const;  // in face_half_edges() order
+    template <class Fn> void for_each_in_loop(int start, Fn&& fn) const;  // one loop, from `start`
     void collect_half_edges(int f, std::vector<int>& out) const;
     bool near_arc(int h, Vec2 p, double tol) const;  // p within tol of half-edge h's arc
 
@@ -393,15 +394,18 @@ private:
 };
 
 template <class Fn>
+void DomainMesh::for_each_in_loop(int start, Fn&& fn) const {
+    int h = start, guard = 0;
+    do {
+        fn(h);
+        h = half_[h].next;
+        if (++guard > 1000000) break;
+    } while (h != start);
+}
+
+template <class Fn>
 void DomainMesh::for_each_half_edge(int f, Fn&& fn) const {
-    for (int start : faces_[f].loops) {
-        int h = start, guard = 0;
-        do {
-            fn(h);
-            h = half_[h].next;
-            if (++guard > 1000000) break;
-        } while (h != start);
-    }
+    for (int start : faces_[f].loops) for_each_in_loop(start, fn);
 }
 
 // Largest value of q along the arc curve(z), z in [z0, z1], over interior critical points only.

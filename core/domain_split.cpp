@@ -252,8 +252,7 @@ void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vect
     const uint64_t seen = tmp_.next_stamp(tmp_.seen_mark, half_.size());
     for (int h0 : hes) {
         if (tmp_.seen_mark[h0] == seen) continue;
-        int h = h0, guard = 0;
-        do { tmp_.seen_mark[h] = seen; h = half_[h].next; } while (h != h0 && ++guard < 1000000);
+        for_each_in_loop(h0, [&](int h) { tmp_.seen_mark[h] = seen; });
         cycles.push_back(h0);
         areas.push_back(loop_area(h0));
     }
@@ -290,12 +289,10 @@ void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vect
         // piece of its own).
         int hp = cycles[hi];
         double longest = -1;
-        for (int h = cycles[hi], guard = 0;; ) {
-            const double len = norm2(vertices_[half_[half_[h].next].origin].p - vertices_[half_[h].origin].p);
-            if (len > longest) { longest = len; hp = h; }
-            h = half_[h].next;
-            if (h == cycles[hi] || ++guard > 1000000) break;
-        }
+        for_each_in_loop(cycles[hi], [&](int h) {
+            const double len = norm2(vertices_[target(h)].p - vertices_[half_[h].origin].p);
+            if (len > longest) longest = len, hp = h;
+        });
         const Edge& E = edges_[hp >> 1];
         Vec2 p = E.curve(0.5 * (E.z0 + E.z1));
         int best = -1;
@@ -481,8 +478,6 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         // points, an ulp of 1e10 off, missed a face 1e-5 across, and no chord was found
         // (generate_pairs3.py "coinc_retri_far" 13964, nearest first: a strip 2e-6 wide where a
         // parallel edge is nearer kept the farther one, d^2 2.3 times the truth).
-        const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
-        if ((std::fabs(g.a) + 2 * std::fabs(g.b) + std::fabs(g.c)) * m * m <= 1e-3 * kZero) g.a = g.b = g.c = 0;
         // So is one within the rounding of the operands' quadratic parts (l2_rounding: each
         // coefficient a few ulps of `quad` off), however far above kZero that is once g is scaled to
         // unit size: two parallel planes 3.6e-11 apart, standing on T', differ by 1.8e-11 in their
@@ -491,7 +486,10 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
         // the one plane's face region, and the strip went whole to the farther plane, 3.7e-9
         // relative above d^2 over half of it (generate_pairs14.py "fin_plate" 3204: a double-walled
         // fin). Dropped, g moves by less than 4 such ulps over T'.
-        if (std::max({std::fabs(g.a), std::fabs(g.b), std::fabs(g.c)}) <= l2_rounding) g.a = g.b = g.c = 0;
+        const double m = std::max({std::fabs(b.lo.x), std::fabs(b.lo.y), std::fabs(b.hi.x), std::fabs(b.hi.y)});
+        if ((std::fabs(g.a) + 2 * std::fabs(g.b) + std::fabs(g.c)) * m * m <= 1e-3 * kZero ||
+            std::max({std::fabs(g.a), std::fabs(g.b), std::fabs(g.c)}) <= l2_rounding)
+            g.a = g.b = g.c = 0;
         // A conic that is straight across the face, to a thousandth of kOnCurve, is its tangent
         // line there: about the box's centre the quadratic part moves g by at most `bend`, and the
         // curve by that over the gradient. A hyperbola 1e4 from T' whose branch crosses a face
