@@ -360,8 +360,15 @@ void decompose_central(const Quadratic2& q, double l1, double l2, Vec2 e1, Vec2 
         // Lines through a centre far from T' are only as accurate near T' as the centre is far
         // (1e8 away: 1e-7 off, past what the split accepts as on the curve): each is moved onto
         // q = 0 along its normal at its foot of the origin, where q's terms are small.
+        // Only a line that passes near T' (its foot of the origin within 1e3): the other's foot may
+        // be the centre itself, where its normal runs along the first line and q there is its
+        // rounding (generate_pairs13.py "ties_cube_center" 4384, side A, target 7, the paper's
+        // order: y (16384 - x) with noise of 1e-20 in x^2, the line x = 16384 moved to x = 0,
+        // across T', and a face beside y = 0 went whole to the farther source, d^2 stepping by
+        // 0.0625 at 1.3e8).
         if (norm(m) > 1e3)
-            for (CurveComponent& line : out.components) line = refined_line(q, line);
+            for (CurveComponent& line : out.components)
+                if (norm(line.c) <= 1e3) line = refined_line(q, line);
         out.type = ConicType::LinePair;
         return;
     }
@@ -536,11 +543,21 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out, double l2_ro
     // Generate_pairs4.py "thin_shell" 14534, nearest first: two lines 2.8e-4 apart across T' taken
     // as a line pair crossing 600 away (l2 = -5.2e-14), each 4.2e-7 off the curve near T', where
     // the parallel lines are off by 7e-10; a sliver 2e-6 wide kept a source 0.5% farther in d^2.
-    if (!central && !l2_noise && std::fabs(l2) > 1e-14 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2)) {
-        const double moved = roots_moved(l1, disc, 4 * std::fabs(l2) + 4 * std::fabs(b2));
+    // So too where l2 is within the rounding the caller knows (l2_noise), if the parabolic form,
+    // which drops l2 (Y - Yr)^2, would move the curve by more than kVertexTolerance (1e-7) near T'
+    // and the central form is a hundred times as precise there: a split's vertices on the face's
+    // boundary are roots of q as computed, noise and all, and its chords must reach them.
+    // Generate_pairs5.py "cone_fan" 60335, nearest first: two edges from one corner to points
+    // 1.3e-8 apart (a flat double cone's apex and its base's centre), their quadratics 1.8e-11
+    // apart; the difference's l2, 1.4e-7 of l1, is below the operands' rounding, and its parabolic
+    // form lay 5e-6 off the crossings on a face's boundary: no chord, and the face went whole to
+    // the farther edge. Its hyperbola, centred 5 from T', is known there to 2e-11.
+    if (!central && std::fabs(l2) > 1e-14 * std::fabs(l1) && std::fabs(b2) <= 1e4 * std::fabs(l2)) {
+        const double moved = roots_moved(l1, disc, 4 * std::fabs(l2) + (l2_noise ? 0.0 : 4 * std::fabs(b2)));
         const double rounding_l2 = 4 * 0x1p-52 * (std::fabs(q.a) + 2 * std::fabs(q.b) + std::fabs(q.c));
         const double R = std::fabs(b2 / l2) + 2;
-        central = moved > 1e-9 && R * std::sqrt(std::fabs(l2 / l1)) * rounding_l2 / (2 * std::fabs(l2)) < moved;
+        const double err = R * std::sqrt(std::fabs(l2 / l1)) * rounding_l2 / (2 * std::fabs(l2));
+        central = l2_noise ? moved > 1e-7 && 100 * err < moved : moved > 1e-9 && err < moved;
     }
     // A centre 1e8 away or more (|b2 / l2|, l1 being ~1): central points near T' are differences of
     // terms that large, off by 1e-8 or more, where the parabola, which drops l2 Y^2, is off by

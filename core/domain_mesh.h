@@ -390,6 +390,8 @@ private:
     void replace_loop_start(int face, int from, int to);
     double edge_max_uncached(int e, const Quadratic2& q, Vec2* where) const;
     bool polish_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& p) const;
+    bool polish_along_arc(const Quadratic2& g, const Quadratic2& eq, const RationalCurve& curve, double lo, double hi, double& z,
+                          Vec2& p) const;
     bool polish_arc_max(const Quadratic2& q, const Quadratic2& g, Vec2& p) const;
 };
 

@@ -39,6 +39,9 @@ constexpr double kMixedSide = 1e-6;
 // A chord whose curve runs outside the face between ends this close may be straight instead
 // (add_chords_of_component): ten times the vertex tolerance.
 constexpr double kNearChord = 1e-6;
+// How far along an arc a crossing may move onto where g = 0 meets the arc's equation
+// (polish_along_arc): a hundred times the vertex tolerance.
+constexpr double kAlongArc = 1e-5;
 
 // g's tangent line at p: g(p) + grad g(p) . (x - p).
 Quadratic2 tangent_line(const Quadratic2& g, Vec2 p) {
@@ -371,20 +374,61 @@ int DomainMesh::outer_across(int hole, const std::vector<int>& cycles, const std
     return -1;
 }
 
-// Newton's method onto the crossing of two curves (a vertex of the split), kept only if it moved
-// little.
-bool DomainMesh::polish_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& p) const {
-    Vec2 x = p;
-    for (int it = 0; it < 4; ++it) {
+namespace {
+// Newton's method from x onto the crossing of f = 0 and g = 0, at most `iterations` steps: false
+// where the curves are nearly tangent there; `last` is the last step's length.
+bool newton_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& x, int iterations, double& last) {
+    last = HUGE_VAL;
+    for (int it = 0; it < iterations; ++it) {
         Vec2 gf = f.gradient(x), gg = g.gradient(x);
         double det = cross(gf, gg);
         if (std::fabs(det) <= 1e-6 * norm(gf) * norm(gg)) return false;  // nearly tangent: keep p
         double F = f(x), G = g(x);
         Vec2 step{(F * gg.y - G * gf.y) / det, (gf.x * G - gg.x * F) / det};
         x -= step;
-        if (norm(step) < 1e-17) break;
+        last = norm(step);
+        if (last < 1e-17) break;
     }
-    if (norm(x - p) > 1e-7) return false;
+    return true;
+}
+}  // namespace
+
+// Newton's method onto the crossing of two curves (a vertex of the split), kept only if it moved
+// little.
+bool DomainMesh::polish_on_two(const Quadratic2& f, const Quadratic2& g, Vec2& p) const {
+    Vec2 x = p;
+    double last;
+    if (!newton_on_two(f, g, x, 4, last) || norm(x - p) > 1e-7) return false;
+    p = x;
+    return true;
+}
+
+// Where g = 0 crosses arc e's curve at a shallow angle, the arc's parametrisation, which may lie
+// ~1e-8 off its equation (a nearly double line's parabolic form drops l2 (Y - Yr)^2), puts g's
+// root along it far from where g = 0 meets the equation, and polish_on_two keeps the root. But
+// the neighbour across the arc, split by the same source, finds its crossing where its own curve
+// meets the equation, which is that point: two vertices, a sliver between them on the wrong side.
+// (Generate_pairs9.py "tinydiff_coinc_far" 4651, nearest first: an edge region's parabola 1.2e-8
+// off, crossed at 3.7e-3 radians; the vertices 4.1e-6 apart along it, and d^2 stepped by 2.2e-11
+// at 0.041 across the piece between.) So the crossing of the two equations is taken where it lies
+// along the arc (less than kVertexTolerance across it, at most kAlongArc along it, and between
+// the arc's neighbouring roots `lo` and `hi`): z and p become it.
+bool DomainMesh::polish_along_arc(const Quadratic2& g, const Quadratic2& eq, const RationalCurve& curve, double lo, double hi,
+                                  double& z, Vec2& p) const {
+    Vec2 x = p;
+    double last;  // settled: the last step far below the vertex tolerance (rounding moves it ~1e-11 on a shallow crossing)
+    if (!newton_on_two(g, eq, x, 6, last) || !(last <= 1e-9)) return false;
+    const Vec2 d = curve.derivative(z);
+    const double dn = norm(d);
+    const Vec2 m = x - p;
+    if (!(dn > 0) || !(norm(m) <= kAlongArc) || !(std::fabs(cross(d, m)) <= kVertexTolerance * dn)) return false;
+    double zx = z;
+    for (int it = 0; it < 4; ++it) {
+        const Vec2 dz = curve.derivative(zx);
+        zx += dot(x - curve(zx), dz) / dot(dz, dz);
+    }
+    if (!(zx > lo && zx < hi) || !(norm(curve(zx) - x) <= kVertexTolerance)) return false;
+    z = zx;
     p = x;
     return true;
 }
@@ -632,11 +676,13 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
     const int nroots = sign_change_roots(along, edges_[e].z0, edges_[e].z1, roots);
     int cur = e;
     for (int k = 0; k < nroots; ++k) {
-        const double z = roots[k];
+        double z = roots[k];
         Vec2 p = curve(z);
         if (snap_to_end(s, cur, p, kSnap) || snap_to_end_on_curve(s, cur, p)) continue;
         if (!(z > edges_[cur].z0 && z < edges_[cur].z1)) continue;
-        polish_on_two(g, eq, p);
+        const double hi = k + 1 < nroots ? std::min(roots[k + 1], edges_[cur].z1) : edges_[cur].z1;
+        if (!polish_on_two(g, eq, p) && polish_along_arc(g, eq, curve, edges_[cur].z0, hi, z, p) && snap_to_end(s, cur, p, kSnap))
+            continue;
         // Polished onto g = 0 where g is flat (near a line pair's centre) the point may move past
         // the end of a straight arc: then it is that end (degenerate pair "mirror" 16298: a
         // vertex 3.4e-8 beyond a corner put the boundary out of order, the two lines' chords

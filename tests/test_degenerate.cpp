@@ -3471,3 +3471,98 @@ TEST(Degenerate, ParallelWallsNoiseQuadraticPartIsDropped) {
     insert_all_validating(mesh, fr, S);
     EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-13), 0);
 }
+
+// Generate_pairs9.py "tinydiff_coinc_far" 4651 (target 9 of A, nearest first; three of its seven
+// sources, inserted in that order, make the same fault): triangles 3e-4 across, 7.8e7 from the
+// origin, two of the sources nearly parallel to T' and 0.2 (frame units) from it, the third's edge
+// region between them. The edge's and the first plane's boundary is a nearly double line, its
+// parabolic form 1.2e-8 off its equation, and the second plane's conics cross it at 3.7e-3
+// radians. The first plane's domain found its crossing where the curves meet; the edge's, its
+// root along the arc 4.1e-6 away, which polishing onto the curves would have moved more than
+// 1e-7: a piece of the arc between the two vertices separated the two planes' domains, d^2
+// stepping by 2.2e-11 at 0.041. Now a crossing that polishing moves along its arc (and not across
+// it) is taken where the curves meet (polish_along_arc). Oracles: validate() after every insertion
+// (d^2 continuous across every arc) and brute force on a grid.
+TEST(Degenerate, ShallowCrossingOfAnOffCurveArcIsWhereTheCurvesMeet) {
+    const TriangleMesh T = make_mesh({{-78339192.098317564, 13239638.298548847, -1286182.6361326913},
+                                      {-78339192.09854795, 13239638.29873435, -1286182.6363395564},
+                                      {-78339192.098613605, 13239638.298387969, -1286182.6362621642}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{-78339192.098392472, 13239638.298477098, -1286182.6360651799},
+                                      {-78339192.098499253, 13239638.29877756, -1286182.6362343021},
+                                      {-78339192.098698765, 13239638.298477564, -1286182.6362561423},
+                                      {-78339192.098391905, 13239638.298614165, -1286182.6361116297},
+                                      {-78339192.098603606, 13239638.298464868, -1286182.636192522},
+                                      {-78339192.098614976, 13239638.298730437, -1286182.6362902971},
+                                      {-78339192.098530173, 13239638.298577407, -1286182.6361852081},
+                                      {-78339192.098396406, 13239638.298602331, -1286182.6361103933},
+                                      {-78339192.098446578, 13239638.298656547, -1286182.6361601597}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    DomainMesh mesh(fr.ccw_corners());
+    insert_all_validating(mesh, fr, S);
+    // Brute force in double 7.8e7 from the origin is off by 1e-4 of d^2: it runs on both meshes
+    // moved by T''s corner (exactly: the coordinates differ by less than a factor 2), which leaves
+    // the frame's axes and scale as they were.
+    const Vec3 o = T.corners(0)[0];
+    const TargetFrame near = TargetFrame::make(shifted(T, -1.0 * o).corners(0));
+    ASSERT_EQ(near.scale, fr.scale);
+    EXPECT_EQ(grid_points_off_d2(mesh, near, shifted(S, -1.0 * o), 200, 1e-12), 0);
+}
+
+// Generate_pairs5.py "cone_fan" 60335 (target 18 of A, nearest first, after its first two
+// sources; targets 26 and 34, its rotations, the same): a flat double cone, its apex 1.3e-8 above
+// its base's centre. The two sources' edges from one base corner, to the apex and to the centre,
+// have quadratics 1.8e-11 apart (of 0.6), and their difference's quadratic part has a smaller
+// eigenvalue 1.4e-7 of the larger: within the rounding of the operands' quadratic parts, so
+// decompose_conic took the curve as a parabola without it. That moved the curve by 5e-6 across T'
+// (l2 (Y - Yr)^2 over the gradient), far past the vertices where g changes sign on the face's
+// boundary: no chord was found, and the whole face went to the farther edge, d^2 stepping by
+// 2.4e-12 where it is 5.6e-14. The conic itself, a hyperbola centred 5 from T' (the computed
+// difference's, which the vertices are roots of), is known there to 2e-11: it is taken where the
+// parabolic form would move the curve by more than kVertexTolerance and the central one is a
+// hundred times as precise. Oracles: validate() after every insertion and brute force on a grid.
+TEST(Degenerate, NoiseEigenvalueOfANearConicIsKept) {
+    const TriangleMesh T = make_mesh({{-0.00076837251969463696, 0.00093882159567623387, 6.4140969580335209e-09},
+                                      {-0.0015367450393892739, 0.0018776431913524677, 0},
+                                      {-0.0022696818389270632, 0.0008577141832594858, 0}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{0, 0, 1.2828193916067042e-08},
+                                      {0.0022114029347439432, 0.00099841190413861624, 0},
+                                      {-0.0019703515397968066, 0.0014159251674224084, 0},
+                                      {0, 0, 0}},
+                                     {{0, 1, 2}, {3, 2, 1}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    DomainMesh mesh(fr.ccw_corners());
+    insert_all_validating(mesh, fr, S);
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-13), 0);
+}
+
+// Generate_pairs13.py "ties_cube_center" 4384 (target 7 of A, the paper's order; three of the ten
+// sources it had then, inserted in that order, make the same fault): a target 0.07 across at the
+// centre of a cube 1660 wide, so d^2 is 1.3e8 in its frame. The third source's face beats the
+// first's edge wherever y > 0 (their difference is y (16384 - x), with 3e-16 of noise in x^2 and
+// y^2), but the line pair's second line, x = 16384, was moved onto q = 0 at the centre and came out
+// as x = 0 (Conic.FarLinePairsOtherLineStaysFarFromT): the sliver the edge still held beside T''s
+// edge y = 0 counted as nowhere nearer and kept it, d^2 stepping by 0.0625 at 1.3e8 against the
+// face's domain. Oracles: validate() after every insertion and brute force on a grid.
+TEST(Degenerate, FarLinePairSplitsTheFaceBesideItsNearLine) {
+    const TriangleMesh T = make_mesh({{0, 0, 0},
+                                      {-2.6211001680824294e-12, 0.050681270348968153, -0.050681270351340707},
+                                      {1.0879075275128357e-12, 0.050681270350154434, -1.1862805828603435e-12}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{-6.076838208463282e-08, -1.9436021068279438e-08, -830.36193341693024},
+                                      {-4.2944105153862523e-08, 830.36193339749423, -830.36193343636614},
+                                      {-830.36193345987431, 830.3619334153185, -830.3619333755978},
+                                      {830.36193343475452, 830.36193339910596, -8.0204403153799492e-08},
+                                      {1.78242769307703e-08, 830.36193341693024, -1.9436021069583869e-08},
+                                      {830.36193337398618, 830.36193337966984, -830.3619334971346},
+                                      {1.78242769307703e-08, 830.36193341693024, -1.9436021069583869e-08},
+                                      {-4.2944105153862523e-08, 830.36193339749423, -830.36193343636614},
+                                      {830.36193337398618, 830.36193337966984, -830.3619334971346}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    DomainMesh mesh(fr.ccw_corners());
+    insert_all_validating(mesh, fr, S);
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-12), 0);
+}

@@ -393,3 +393,27 @@ TEST(Conic, RankOneDifferenceWithinItsOperandsRoundingIsNoEllipse) {
         EXPECT_LT(distance_to_components(d, root_between(q, p0, p1)), 1e-9) << "y " << y;
     }
 }
+
+// A line pair centred far from T' whose second line's foot of the origin is the centre
+// (generate_pairs13.py "ties_cube_center" 4384, side A, target 7, the paper's order: an edge's
+// quadratic less a face's, both 1.3e8 from a target at a cube's centre, y (16384 - x) but for
+// 3e-16 of noise in x^2 and y^2). Each line through a centre that far is moved onto q = 0 along its
+// normal at its foot of the origin, which for x = 16384 is the centre: along y = 0, where q is that
+// noise alone, whose root is x = 0. The line came out as x = 0, across T'. Now only lines that pass
+// near T' are moved. Oracle: q's sign, in long double: q > 0 over T' above y = 0, and its zero
+// across y = 0 on a component.
+TEST(Conic, FarLinePairsOtherLineStaysFarFromT) {
+    Quadratic2 q;
+    q.a = 3.3306690738754696e-16; q.b = -1; q.c = -3.3306690738754696e-16;
+    q.d = 0; q.e = 16384; q.f = 0;
+    ConicDecomposition d;
+    decompose_conic(q, d, 8 * 0x1p-52 * 0.5);  // the operands' parts are at most 0.5
+    ASSERT_FALSE(d.components.empty()) << conic_type_name(d.type);
+    for (double x : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+        ASSERT_GT(q_at(q, x, 1e-3), 0) << x;
+        EXPECT_GT(distance_to_components(d, {x, 0.5}), 0.4) << "x " << x;  // nothing crosses T' above y = 0
+        const Vec2 p0{x, -1e-3}, p1{x, 1e-3};
+        ASSERT_LT(q_at(q, p0.x, p0.y), 0) << x;
+        EXPECT_LT(distance_to_components(d, root_between(q, p0, p1)), 1e-9) << "x " << x;
+    }
+}
