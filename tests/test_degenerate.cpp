@@ -3566,3 +3566,68 @@ TEST(Degenerate, FarLinePairSplitsTheFaceBesideItsNearLine) {
     insert_all_validating(mesh, fr, S);
     EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-12), 0);
 }
+
+// Generate_pairs5.py "coinc_noise_far" 58438 (target 9 of A, the debugger's order; six of its nine
+// sources, inserted in that order, make the same fault): a noisy coincident copy 6.6e4 from the
+// origin. At T''s corner, where three sources meet, a face's needle 1.26e-5 long and 2.2e-9 wide
+// came out folded (its sides crossed), the other domain on both sides. unfold_needles cuts such a
+// needle across its base at the foot of its shorter side's end on the longer side, but that foot
+// fell 3e-10 past the longer side's end (the side's line runs by its vertex within kOffCurve), and
+// the needle was left as it was. The next source's region line runs along it: the split pinched
+// the base, the needle became a loop of its own, the line's chord joined it to the rest, and no
+// piece was cut: the face, 2e-5 across, kept an edge's quadratic up to 5% above d^2 (2.9e-10)
+// where that source's face is nearer. Now a foot past the end, the ends within kVertexTolerance,
+// is that end. Oracles: validate() after every insertion of the paper's insertion (as the debugger
+// runs it), and brute force on a fine grid at the corner (on both meshes moved by T''s corner,
+// which keeps them exact), within the resolution (4e-7 times the gradient).
+TEST(Degenerate, FoldedNeedleWhoseFootFallsPastItsLongerSideIsUnfolded) {
+    const TriangleMesh T = make_mesh({{66024.720161124205, 1.055852089341107, 0.97033013579797867},
+                                      {66025.733709513661, 1.1442500272725102, -1.6412916296919833},
+                                      {66023.325536228338, 0.088397937931403256, -2.6116217654899616}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{66023.325639431918, 0.088503395779516186, -2.6118117424670029},
+                                      {66025.733730947817, 1.1441766532699507, -1.6413132914155564},
+                                      {66026.748024943285, -1.4507652932714203, -1.3353286871935151},
+                                      {66022.312166556789, -0.00010769209079488532, 7.6820398628389009e-06},
+                                      {66023.325639431918, 0.088503395779516186, -2.6118117424670029},
+                                      {66024.339920167986, -2.506433208832235, -2.3056532976063657},
+                                      {66022.312166556789, -0.00010769209079488532, 7.6820398628389009e-06},
+                                      {66024.720166713814, 1.0559157252099372, 0.97020198459111062},
+                                      {66023.325639431918, 0.088503395779516186, -2.6118117424670029},
+                                      {66024.720166713814, 1.0559157252099372, 0.97020198459111062},
+                                      {66025.733730947817, 1.1441766532699507, -1.6413132914155564},
+                                      {66023.325639431918, 0.088503395779516186, -2.6118117424670029},
+                                      {66022.312166556789, -0.00010769209079488532, 7.6820398628389009e-06},
+                                      {66023.326430677378, -2.5947996040172114, 0.30587828964153507},
+                                      {66024.720166713814, 1.0559157252099372, 0.97020198459111062},
+                                      {66023.326430677378, -2.5947996040172114, 0.30587828964153507},
+                                      {66025.73455963684, -1.5390423269713291, 1.2761846252383726},
+                                      {66024.720166713814, 1.0559157252099372, 0.97020198459111062}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 17}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    DomainMesh mesh(fr.ccw_corners());
+    DomainMesh::Listener watch;  // the paper's insertion, every cut reported: the debugger's
+    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+        mesh.insert(project_source(fr, S.corners(s), s), {}, &watch);
+        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
+    }
+    const auto c = fr.ccw_corners();
+    ASSERT_EQ(c[1].x, 1.0);  // T' is (0, 0), (1, 0), (0.5, 0.5): the fault lay 5e-5 from (1, 0)
+    ASSERT_EQ(c[1].y, 0.0);
+    const Vec3 o = T.corners(0)[0];
+    TargetFrame near = fr;
+    near.origin = fr.origin - o;
+    const TriangleMesh Sn = shifted(S, -1.0 * o);
+    int off = 0, in = 0;
+    for (int i = 0; i <= 200; ++i)
+        for (int j = 1; j <= 200; ++j) {
+            const Vec2 p{0.9999 + 1e-4 * i / 200.0, 1e-4 * j / 200.0};
+            const int f = p.x + p.y < 1 ? mesh.face_at(p) : -1;
+            if (f <= 0) continue;
+            ++in;
+            const double q = mesh.faces()[f].poly(p), d2 = brute_d2(near, Sn, p);
+            off += std::abs(q - d2) > 1e-7 * d2 + 4e-7 * norm(mesh.faces()[f].poly.gradient(p)) + 1e-15;
+        }
+    EXPECT_GT(in, 10000);
+    EXPECT_EQ(off, 0);
+}

@@ -713,6 +713,8 @@ static double max_coord(const Pair& P) {
 // --thorough adds TargetSolver::validate(true) after every insertion of every target (domain
 // polynomials against brute force, d^2 continuous across edges): the transient states that checks
 // 1 and 2 see on three targets only (generate_pairs4.py "quantized" 19453: target 10 of 48).
+// After its first failure a target runs to the end, which is checked once more
+// ("0_every_target_end"): a failure that lasts to the end, not one after an insertion only.
 static bool g_every_target = false, g_thorough = false;
 static double g_max_width = 0;  // --max-width REL: check 6 on every pair, both modes' intervals at most REL of the diagonal
 static void check_every_target(Ctx& C, const VoxelGrid& grid) {
@@ -742,6 +744,13 @@ static void check_every_target(Ctx& C, const VoxelGrid& grid) {
                         const std::string full = g_thorough ? ts.validate(true) : "";
                         if (!full.empty()) {
                             C.fail("0_every_target_validate", where + fmt(" (%d insertions): ", ts.insertions()) + full);
+                            // Whether the end is right too: a failure after an insertion may last
+                            // (generate_pairs5.py "coinc_noise_far" 58438 and "coinc_retess_far"
+                            // 15407, the debugger's order, were taken for transient until this).
+                            while (ts.step()) {}
+                            const std::string end = ts.validate(true);
+                            if (!end.empty())
+                                C.fail("0_every_target_end", where + fmt(" (the end, %d insertions): ", ts.insertions()) + end);
                             break;
                         }
                     }
