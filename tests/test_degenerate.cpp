@@ -3631,3 +3631,68 @@ TEST(Degenerate, FoldedNeedleWhoseFootFallsPastItsLongerSideIsUnfolded) {
     EXPECT_GT(in, 10000);
     EXPECT_EQ(off, 0);
 }
+
+// An orphan loop of two needles joined at a waist is cut there, each needle going to the domain
+// beside it (DomainMesh::split_orphan_at_waist; generate_pairs4.py "lod_surface" 21658, side B,
+// target 3, the debugger's order, after the 9th insertion: the whole loop went to the far side's
+// domain, and d^2 stepped by 3.3e-11 at 2.8e-6 along a needle 4e-6 long). Oracle: d^2 by brute
+// force at the middle of every arc between two domains, where both domains' quadratics must meet
+// it, up to the domain mesh's placement of its vertices (kOffCurve) times their gradients.
+TEST(Degenerate, OrphanLoopOfTwoNeedlesIsCutAtItsWaist) {
+    const TriangleMesh T = make_mesh({{0.078945240111254644, 0.052906880329141169, 0.031301542223552067},
+                                      {0.072602087884097957, 0.048432552679017832, 0.039819275938209553},
+                                      {0.079858169853249464, 0.05422496663268439, 0.033590954239641264}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{0.075608162007321025, 0.049663665733739572, 0.031087162102680754},
+                                      {0.075909355157926628, 0.050106271447265011, 0.031849684966814479},
+                                      {0.078340516319176351, 0.052024101526346969, 0.029776035655465438},
+                                      {0.078340516319176351, 0.052024101526346969, 0.029776035655465438},
+                                      {0.075909355157926628, 0.050106271447265011, 0.031849684966814479},
+                                      {0.076211327526701705, 0.050548066229271098, 0.032612361454975307},
+                                      {0.078340516319176351, 0.052024101526346969, 0.029776035655465438},
+                                      {0.076211327526701705, 0.050548066229271098, 0.032612361454975307},
+                                      {0.078642488604684549, 0.052465896395008808, 0.030538712127210078},
+                                      {0.078642488604684549, 0.052465896395008808, 0.030538712127210078},
+                                      {0.076211327526701705, 0.050548066229271098, 0.032612361454975307},
+                                      {0.07651407909803376, 0.050989050096005746, 0.033375191564085221},
+                                      {0.078642488604684549, 0.052465896395008808, 0.030538712127210078},
+                                      {0.07651407909803376, 0.050989050096005746, 0.033375191564085221},
+                                      {0.078945240111254644, 0.052906880329141169, 0.031301542223552067},
+                                      {0.078945240111254644, 0.052906880329141169, 0.031301542223552067},
+                                      {0.07651407909803376, 0.050989050096005746, 0.033375191564085221},
+                                      {0.076817609859780131, 0.051429223060105826, 0.034138175291750263},
+                                      {0.078945240111254644, 0.052906880329141169, 0.031301542223552067},
+                                      {0.076817609859780131, 0.051429223060105826, 0.034138175291750263},
+                                      {0.079248770826743073, 0.053347053341381831, 0.032064525942097293},
+                                      {0.07803932327034363, 0.051581495706906601, 0.029013512811396389},
+                                      {0.075608162007321025, 0.049663665733739572, 0.031087162102680754},
+                                      {0.078340516319176351, 0.052024101526346969, 0.029776035655465438},
+                                      {0.07651407909803376, 0.050989050096005746, 0.033375191564085221},
+                                      {0.074398915870062962, 0.049498418408883638, 0.036214282524606352},
+                                      {0.076817609859780131, 0.051429223060105826, 0.034138175291750263}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 17}, {18, 19, 20}, {21, 22, 23}, {24, 25, 26}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    DomainMesh mesh(fr.ccw_corners());
+    DomainMesh::Listener watch;  // the paper's insertion, every cut reported: the debugger's
+    for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+        mesh.insert(project_source(fr, S.corners(s), s), {}, &watch);
+        EXPECT_EQ(mesh.validate(), "") << "after source " << s;
+    }
+    int arcs = 0, off = 0;
+    for (size_t e = 0; e < mesh.edges().size(); ++e) {
+        const DomainMesh::Edge& E = mesh.edges()[e];
+        const int F = mesh.half_edges()[2 * e].face, G = mesh.half_edges()[2 * e + 1].face;
+        if (!E.alive || F <= 0 || G <= 0) continue;
+        const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
+        const double d2 = brute_d2(fr, S, m);
+        for (int X : {F, G}) {
+            const Quadratic2& q = mesh.faces()[X].poly;
+            const double tol = 1e-6 * (norm(mesh.faces()[F].poly.gradient(m)) + norm(mesh.faces()[G].poly.gradient(m))) + 1e-12;
+            off += std::abs(q(m) - d2) > tol;
+        }
+        ++arcs;
+    }
+    EXPECT_GT(arcs, 10);
+    EXPECT_EQ(off, 0);
+    EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 300, 1e-9), 0);
+}
