@@ -386,6 +386,7 @@ private:
     double straight_foot(int e, Vec2 p) const;  // the parameter z of p's foot on straight arc e
     bool detach_orphan_loops(uint64_t since, const Listener* listener);
     bool split_orphan_at_waist(int f, int h0, int& first, int& second);
+    bool sliver_below_resolution(int X, int Y, int e, Vec2 m) const;
     void dissolve_collinear_vertices();
     double edge_max(int e, const Quadratic2& q, Vec2* where);
     void replace_loop_start(int face, int from, int to);

@@ -3696,3 +3696,75 @@ TEST(Degenerate, OrphanLoopOfTwoNeedlesIsCutAtItsWaist) {
     EXPECT_EQ(off, 0);
     EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 300, 1e-9), 0);
 }
+
+// A sliver below the resolution, left where two sources' edges 1.1e-7 apart made a boundary 8.5e-8
+// off (the farther edge's quadratic 2e-8 above the nearer one's there, within its gradient times
+// that), taken in part by a plane parallel to T' that lies between the two: validate() holds d^2's
+// continuity across the sliver's arc to its neighbours, not to its own flat quadratic
+// (DomainMesh::sliver_below_resolution; generate_pairs15.py "box_union" 2061, side B, target 14,
+// after the 11th insertion, in the paper's and the debugger's orders). Oracle: brute force on a
+// fine grid round the sliver, every point's domain within 1e-9 of d^2 but for the resolution (1e-7
+// times |grad d^2| <= 2 d), and on a grid over T'.
+TEST(Degenerate, SliverBelowTheResolutionTakenByAFlatSourceKeepsDSquaredContinuous) {
+    const TriangleMesh T = make_mesh({{0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {-0.055172724400882556, 0.95528927508161565, -0.84876014375631426},
+                                      {1.0014238161040061, 1.000307778717177, -0.99776378439477842}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {0.26620068066002273, 0.96534266149878623, -1.1884188485539982},
+                                      {0.26864014922060525, 1.0791336478729587, -1.1367406885938314},
+                                      {0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {0.26864014922060525, 1.0791336478729587, -1.1367406885938314},
+                                      {0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {-0.055172724400882556, 0.95528927508161565, -0.84876014375631426},
+                                      {0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {-0.055172724400882556, 0.95528927508161565, -0.84876014375631426},
+                                      {-0.057612192961465081, 0.84149828870744314, -0.90043830371648093},
+                                      {0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {-0.057612192961465081, 0.84149828870744314, -0.90043830371648093},
+                                      {0.26620068066002273, 0.96534266149878623, -1.1884188485539982},
+                                      {-0.057612192961465081, 0.84149828870744314, -0.90043830371648093},
+                                      {0.18664902933300187, 0.81522299898884909, -0.85411266898346327},
+                                      {0.26620068066002273, 0.96534266149878623, -1.1884188485539982},
+                                      {0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {-0.055172724400882556, 0.95528927508161565, -0.84876014375631426},
+                                      {0.18908849789358442, 0.92901398536302171, -0.80243450902329649},
+                                      {0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {0.18908849789358442, 0.92901398536302171, -0.80243450902329649},
+                                      {0.26864014922060525, 1.0791336478729587, -1.1367406885938314},
+                                      {0.2662006784589348, 0.96534255882725695, -1.1884188951822583},
+                                      {0.87685373419510215, 0.89965433453077215, -1.0726048083497142},
+                                      {0.87685373639619013, 0.89965443720230132, -1.072604761721454},
+                                      {0.2662006784589348, 0.96534255882725695, -1.1884188951822583},
+                                      {0.87685373639619013, 0.89965443720230132, -1.072604761721454},
+                                      {0.26620068066002273, 0.96534266149878623, -1.1884188485539982},
+                                      {0.2662006784589348, 0.96534255882725695, -1.1884188951822583},
+                                      {0.79730208286808124, 0.74953467202083501, -0.73829862877917918},
+                                      {0.87685373419510215, 0.89965433453077215, -1.0726048083497142}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 17}, {18, 19, 20}, {21, 22, 23}, {24, 25, 26}, {27, 28, 29}, {30, 31, 32}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    for (bool watched : {false, true}) {
+        DomainMesh mesh(fr.ccw_corners());
+        DomainMesh::Listener watch;  // the paper's insertion, every cut reported: the debugger's
+        for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+            mesh.insert(project_source(fr, S.corners(s), s), {}, watched ? &watch : nullptr);
+            EXPECT_EQ(mesh.validate(), "") << "after source " << s << (watched ? ", watched" : "");
+        }
+        int in = 0, off = 0;
+        for (int i = -100; i <= 100; ++i)
+            for (int j = -100; j <= 100; ++j) {
+                const Vec2 p{0.452015 + 1e-6 * i, 0.205373 + 1e-6 * j};  // the sliver's arc runs through it
+                const int f = mesh.face_at(p);
+                if (f <= 0) continue;
+                ++in;
+                const Quadratic2& q = mesh.faces()[f].poly;
+                const double d2 = brute_d2(fr, S, p);
+                off += std::abs(q(p) - d2) > 1e-9 * d2 + 1e-7 * 2 * std::sqrt(d2);  // |grad d^2| <= 2 d
+            }
+        EXPECT_GT(in, 30000);
+        EXPECT_EQ(off, 0);
+        EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-9), 0);
+    }
+}
