@@ -403,14 +403,10 @@ bool DomainMesh::detach_orphan_loops(uint64_t since, const Listener* L) {
                 --k;
                 continue;
             }
-            int across = -1, h = h0;
-            double longest = -1;
-            do {
-                const double len = norm(vertices_[target(h)].p - vertices_[half_[h].origin].p);
-                const int g = half_[h ^ 1].face;
-                if (g > 0 && g != (int)f && faces_[g].alive && !faces_[g].infinite && len > longest) longest = len, across = g;
-                h = half_[h].next;
-            } while (h != h0);
+            std::vector<int> hs;
+            int h = h0;
+            do { hs.push_back(h); h = half_[h].next; } while (h != h0);
+            const int across = face_across_longest((int)f, hs, 0, (int)hs.size());
             if (across < 0) continue;
             Face piece = faces_[across];
             piece.loops.assign(1, h0);
@@ -429,6 +425,20 @@ bool DomainMesh::detach_orphan_loops(uint64_t since, const Listener* L) {
         }
     }
     return any;
+}
+
+// The live finite face other than f across the longest of the arcs hs[i], ..., hs[i + cnt - 1]
+// (indices modulo hs.size()), the first of equals; -1 if there is none.
+int DomainMesh::face_across_longest(int f, const std::vector<int>& hs, int i, int cnt) const {
+    const int n = (int)hs.size();
+    int best = -1;
+    double len = -1;
+    for (int k = 0; k < cnt; ++k) {
+        const int he = hs[(i + k) % n], g = half_[he ^ 1].face;
+        const double l = norm(vertices_[target(he)].p - vertices_[half_[he].origin].p);
+        if (g > 0 && g != f && faces_[g].alive && !faces_[g].infinite && l > len) len = l, best = g;
+    }
+    return best;
 }
 
 // An orphan loop may be two needles joined at a waist where an earlier cut's curve crossed it, each
@@ -452,16 +462,7 @@ bool DomainMesh::split_orphan_at_waist(int f, int h0, int& first, int& second) {
         const int g = half_[he ^ 1].face;
         return g > 0 && g != f && faces_[g].alive && !faces_[g].infinite ? g : -1;
     };
-    auto longest = [&](int i, int cnt) {  // the face across the longest of arcs hs[i], ... (cnt of them)
-        int best = -1;
-        double len = -1;
-        for (int k = 0; k < cnt; ++k) {
-            const int he = hs[(i + k) % n], g = across(he);
-            const double l = norm(vertices_[target(he)].p - vertices_[half_[he].origin].p);
-            if (g >= 0 && l > len) len = l, best = g;
-        }
-        return best;
-    };
+    auto longest = [&](int i, int cnt) { return face_across_longest(f, hs, i, cnt); };
     auto step = [&](int i, int cnt, int g) {  // the largest step of d^2 at those arcs' middles, g's quadratic inside
         double s = 0;
         for (int k = 0; k < cnt; ++k) {

@@ -579,34 +579,6 @@ void DomainMesh::update_maxima(std::vector<Candidate>& out) {
 
 // ---------------------------------------------------------------- invariants
 
-// The continuity of d^2 across arc e (faces X and Y) at its point m, where X is a sliver narrower
-// than the resolution there: another arc of X, face H across it, passes within kVertexTolerance of
-// m. Such a sliver stands for the boundary between H and Y, which may lie up to that far off (a
-// sliver the splits dropped, kept by the face beside it), and a later source nearer than H there
-// takes it with its own quadratic. So d^2 holds across e if X's value lies between H's and Y's,
-// and H and Y meet at m as two neighbours must (their gradients times max(kOffCurve, delta_)).
-// (Generate_pairs15.py "box_union" 2061, side B, target 14, the paper's and the debugger's orders,
-// after the 11th insertion: two sources' edges 1.1e-7 apart left a boundary 8.5e-8 off where the
-// farther edge's quadratic stood 2e-8 above the nearer one's, within its gradient times that; a
-// plane parallel to T' then took the part of that sliver where it was below the farther edge, and
-// met the nearer edge's domain, both quadratics flat there, with a step of 1.2e-8.)
-bool DomainMesh::sliver_below_resolution(int X, int Y, int e, Vec2 m) const {
-    const Quadratic2 &qX = faces_[X].poly, &qY = faces_[Y].poly;
-    const double pos = std::max(kOffCurve, delta_), x = qX(m), y = qY(m);
-    bool holds = false;
-    for_each_half_edge(X, [&](int h) {
-        const int H = half_[h ^ 1].face;
-        if (holds || (h >> 1) == e || H <= 0 || H == X || !faces_[H].alive || faces_[H].infinite || !near_arc(h, m, kVertexTolerance)) return;
-        const Quadratic2& qH = faces_[H].poly;
-        const double scale = std::max({qX.scale(), qY.scale(), qH.scale()});
-        const double r = rounding_allowance(scale, delta_) + 1e-13 * scale;
-        const double z = qH(m);
-        const double tol = pos * (norm(qH.gradient(m)) + norm(qY.gradient(m))) + pos * pos + r + faces_[H].tie_slack + faces_[Y].tie_slack;
-        holds = x >= std::min(z, y) - r && x <= std::max(z, y) + r && std::fabs(z - y) <= tol;
-    });
-    return holds;
-}
-
 std::string DomainMesh::validate(double area_tol) const {
     char buf[256];
     for (size_t h = 0; h < half_.size(); ++h) {
@@ -680,8 +652,7 @@ std::string DomainMesh::validate(double area_tol) const {
         // corner region, a wedge 5e-7 wide per unit, crossed by another needle's region line where
         // it was 3e-12 wide; the wedge's tip below the line, 5.4e-6 long, kept the edge region
         // above, d^2 7e-12 by its polynomial beside 0 (the needle lies in T''s plane).
-        if (jump > tol && !near_boundary(F, m, kTinyChord, (int)e) && !near_boundary(G, m, kTinyChord, (int)e) &&
-            !sliver_below_resolution(F, G, (int)e, m) && !sliver_below_resolution(G, F, (int)e, m))
+        if (jump > tol && !near_boundary(F, m, kTinyChord, (int)e) && !near_boundary(G, m, kTinyChord, (int)e))
             return std::snprintf(buf, sizeof buf, "faces %d and %d: d^2 jumps by %g across edge %zu (%g and %g)", F, G, jump, e,
                                  qF(m), qG(m)), buf;
     }
