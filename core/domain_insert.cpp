@@ -427,16 +427,22 @@ bool DomainMesh::detach_orphan_loops(uint64_t since, const Listener* L) {
     return any;
 }
 
-// The live finite face other than f across the longest of the arcs hs[i], ..., hs[i + cnt - 1]
-// (indices modulo hs.size()), the first of equals; -1 if there is none.
+// The live finite face other than f across half-edge he; -1 if there is none.
+int DomainMesh::finite_face_across(int f, int he) const {
+    const int g = half_[he ^ 1].face;
+    return g > 0 && g != f && faces_[g].alive && !faces_[g].infinite ? g : -1;
+}
+
+// finite_face_across the longest of the arcs hs[i], ..., hs[i + cnt - 1] that have one (indices
+// modulo hs.size()), the first of equals; -1 if none has.
 int DomainMesh::face_across_longest(int f, const std::vector<int>& hs, int i, int cnt) const {
     const int n = (int)hs.size();
     int best = -1;
     double len = -1;
     for (int k = 0; k < cnt; ++k) {
-        const int he = hs[(i + k) % n], g = half_[he ^ 1].face;
+        const int he = hs[(i + k) % n], g = finite_face_across(f, he);
         const double l = norm(vertices_[target(he)].p - vertices_[half_[he].origin].p);
-        if (g > 0 && g != f && faces_[g].alive && !faces_[g].infinite && l > len) len = l, best = g;
+        if (g >= 0 && l > len) len = l, best = g;
     }
     return best;
 }
@@ -458,15 +464,11 @@ bool DomainMesh::split_orphan_at_waist(int f, int h0, int& first, int& second) {
     do { hs.push_back(h); h = half_[h].next; } while (h != h0 && hs.size() <= 64);
     const int n = (int)hs.size();
     if (h != h0 || n < 4) return false;
-    auto across = [&](int he) {
-        const int g = half_[he ^ 1].face;
-        return g > 0 && g != f && faces_[g].alive && !faces_[g].infinite ? g : -1;
-    };
     auto longest = [&](int i, int cnt) { return face_across_longest(f, hs, i, cnt); };
     auto step = [&](int i, int cnt, int g) {  // the largest step of d^2 at those arcs' middles, g's quadratic inside
         double s = 0;
         for (int k = 0; k < cnt; ++k) {
-            const int he = hs[(i + k) % n], a = across(he);
+            const int he = hs[(i + k) % n], a = finite_face_across(f, he);
             if (a < 0) continue;
             const Edge& E = edges_[he >> 1];
             const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));

@@ -306,8 +306,7 @@ private:
     void close_hole_crossings(SplitCall& s);
     bool chord_inside(const SplitCall& s, const Chord& c) const;
     double path_area(int from, int to, Box2& box) const;
-    bool pinched_lobes(int f, int va, int vb, int& ha, int& hb) const;
-    bool lobe_across(const SplitCall& s, int va, int vb, int& ha, int& hb) const;
+    bool pinched_lobes(const SplitCall& s, int va, int vb, int& ha, int& hb) const;
     void side_range(const SplitCall& s, int from, int to, double& lo, double& hi) const;
     bool once_on_one_loop(int f, int va, int vb, int& ha, int& hb) const;
     void pinch_face(int va, int vb, int ha, int hb);
@@ -388,6 +387,7 @@ private:
     double straight_foot(int e, Vec2 p) const;  // the parameter z of p's foot on straight arc e
     bool detach_orphan_loops(uint64_t since, const Listener* listener);
     bool split_orphan_at_waist(int f, int h0, int& first, int& second);
+    int finite_face_across(int f, int he) const;
     int face_across_longest(int f, const std::vector<int>& hs, int i, int cnt) const;
     void dissolve_collinear_vertices();
     double edge_max(int e, const Quadratic2& q, Vec2* where);

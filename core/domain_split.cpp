@@ -1140,7 +1140,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
     // the chords found and to come that end at c.vb end at c.va.
     auto pinch_at = [&](size_t i, const Chord& c) {
         int ha, hb;
-        if (!pinched_lobes(f, c.va, c.vb, ha, hb) && !lobe_across(s, c.va, c.vb, ha, hb)) return;
+        if (!pinched_lobes(s, c.va, c.vb, ha, hb)) return;
         pinch_face(c.va, c.vb, ha, hb);
         ++s.pinches;
         for (size_t j = i + 1; j < cand.size(); ++j) {
@@ -1417,7 +1417,7 @@ double DomainMesh::path_area(int from, int to, Box2& box) const {
     }
 }
 
-// Two vertices of face f on the curve, closer than kTinyChord (too close for a chord between
+// Two vertices of the face s.f on the curve, closer than kTinyChord (too close for a chord between
 // them), where the face's boundary passes the same point twice: a pinch. The two boundary paths
 // between them each close into a lobe, and a chord of no length is what separates the lobes.
 // Dropping it is right where what lies across it is a sliver below the resolution (a thin wedge
@@ -1426,33 +1426,26 @@ double DomainMesh::path_area(int from, int to, Box2& box) const {
 // "tilted_grid" 1765, nearest first: a domain of 1.3e-3 of T' joined at a neck 1e-12 wide, where a
 // hyperbola's corner passes a region line, to a sliver 0.28 long and 7e-9 wide; a region line
 // through the neck put the sliver 0.28 on one side and the domain 0.05 on the other, the face stayed
-// whole with the sliver's side, and d^2 jumped by 6.7e-4 across its edge.) True, with the
-// half-edges of f leaving va and vb, if each vertex lies once on one loop of f, both lobes have
-// an area (above kCluster^2, the rounding of a loop's area being far below that: a spike 1.4e-12
-// wide, "sliver" 10402, has none) and one of them is wider than kCluster (its area above kCluster
-// times its size).
-bool DomainMesh::pinched_lobes(int f, int va, int vb, int& ha, int& hb) const {
-    if (!once_on_one_loop(f, va, vb, ha, hb)) return false;
+// whole with the sliver's side, and d^2 jumped by 6.7e-4 across its edge.) Nor is it right, whatever
+// the lobes' widths, where one lobe lies wholly and certainly on one side of the curve and the
+// other has an arc certainly on the other: no side serves both, and a lobe below the resolution
+// kept with the rest of the face carries a quadratic that may be far from d^2 there, not its
+// neighbour's. (Generate_pairs15.py "lod_sphere" 4941, side B, target 6, after the 4th insertion:
+// an edge's domain 0.7 long between T''s edge and a conic, its tip lobe 0.15 long and at most 1e-8
+// wide by T''s corner (1, 0), joined to the rest at a neck 3.7e-12 wide that a line of the 4th
+// source's line pair crossed; the rest went to the 4th source, tip and all, 0.0625 in d^2 where the
+// truth is 2.2e-9.) True, with the half-edges of the face leaving va and vb, if each vertex lies
+// once on one loop of it, both lobes have an area (above kCluster^2, the rounding of a loop's area
+// being far below that: a spike 1.4e-12 wide, "sliver" 10402, has none), and one of them is wider
+// than kCluster (its area above kCluster times its size) or the lobes part across the curve as
+// above.
+bool DomainMesh::pinched_lobes(const SplitCall& s, int va, int vb, int& ha, int& hb) const {
+    if (!once_on_one_loop(s.f, va, vb, ha, hb)) return false;
     Box2 box_a, box_b;
     const double area_a = path_area(ha, vb, box_a), area_b = path_area(hb, va, box_b);
     if (!(area_a > kCluster * kCluster && area_b > kCluster * kCluster)) return false;
     auto wide = [](double area, const Box2& b) { return area > kCluster * norm(b.hi - b.lo); };
-    return wide(area_a, box_a) || wide(area_b, box_b);
-}
-
-// Two lobes joined at va and vb, both with an area, one of them wholly and certainly on one side
-// of the curve and the other with an arc certainly on the other side: whatever their widths, no
-// side serves both, and a lobe below the resolution kept with the rest of the face carries a
-// quadratic that may be far from d^2 there, not its neighbour's. (Generate_pairs15.py "lod_sphere"
-// 4941, side B, target 6, after the 4th insertion: an edge's domain 0.7 long between T''s edge and
-// a conic, its tip lobe 0.15 long and at most 1e-8 wide by T''s corner (1, 0), joined to the rest
-// at a neck 3.7e-12 wide that a line of the 4th source's line pair crossed; the rest went to the
-// 4th source, tip and all, 0.0625 in d^2 where the truth is 2.2e-9.) True, with the half-edges of
-// f leaving va and vb, as pinched_lobes.
-bool DomainMesh::lobe_across(const SplitCall& s, int va, int vb, int& ha, int& hb) const {
-    if (!once_on_one_loop(s.f, va, vb, ha, hb)) return false;
-    Box2 box;
-    if (!(path_area(ha, vb, box) > kCluster * kCluster && path_area(hb, va, box) > kCluster * kCluster)) return false;
+    if (wide(area_a, box_a) || wide(area_b, box_b)) return true;
     const double certain = certain_side(s);
     double lo_a, hi_a, lo_b, hi_b;
     side_range(s, ha, vb, lo_a, hi_a);

@@ -3704,7 +3704,7 @@ TEST(Degenerate, OrphanLoopOfTwoNeedlesIsCutAtItsWaist) {
 
 // A lobe below the resolution, joined to the rest of its face at a neck that the curve crosses,
 // wholly on the other side of the curve from the rest, is pinched off and kept on its side
-// (DomainMesh::lobe_across; generate_pairs15.py "lod_sphere" 4941, side B, target 6, after the 4th
+// (DomainMesh::pinched_lobes; generate_pairs15.py "lod_sphere" 4941, side B, target 6, after the 4th
 // insertion in the paper's and the debugger's orders: the first source's edge domain ran 0.7 along
 // T''s edge, its tip lobe 0.15 long and at most 1e-8 wide by T''s corner (1, 0), joined to the rest
 // at a neck 3.7e-12 wide; a line of the 4th source's line pair crossed the neck, and the whole
