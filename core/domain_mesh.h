@@ -301,6 +301,7 @@ private:
     bool foot_in_face(int f, Vec2 q) const;
     bool short_chord_inside(int f, const Chord& c, Vec2 mid) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;
+    bool thin_beyond_chord(int f, const Chord& c) const;
     bool chord_past_departure(const SplitCall& s, const Chord& c, double tol, Chord& out) const;
     int loop_of(int f, int v) const;
     void close_hole_crossings(SplitCall& s);

@@ -764,6 +764,25 @@ std::string TargetSolver::validate(bool thorough) const {
     const double noise = rounding_sq() / (frame_.scale * frame_.scale);  // frame units squared
     const std::vector<int> classes = thorough ? tie_classes(proj, delta) : std::vector<int>();
     const auto& F = mesh_->faces();
+    // The regions of the features tied with face g's label (the same quadratic), through a chain
+    // (tie_classes: merging joins neighbours link by link): the domain may extend over them. The
+    // polynomial is still checked against d^2 below.
+    auto tied_regions = [&](const DomainMesh::Face& g) {
+        std::vector<int> seed;
+        std::vector<const SourceRegion*> tied;
+        for (size_t s = 0; s < proj.size(); ++s)
+            for (const SourceRegion& r : proj[s].regions)
+                if (same_feature_quadratic(r.poly, r.kind, g.poly, g.label.region, delta)) seed.push_back(classes[feature_index(s, r.kind)]);
+        for (size_t s = 0; s < proj.size(); ++s)
+            for (const SourceRegion& r : proj[s].regions)
+                if (std::find(seed.begin(), seed.end(), classes[feature_index(s, r.kind)]) != seed.end()) tied.push_back(&r);
+        return tied;
+    };
+    auto in_any = [](const std::vector<const SourceRegion*>& regions, Vec2 p, double slack) {
+        for (const SourceRegion* r : regions)
+            if (region_margin(*r, p, false) >= -slack) return true;
+        return false;
+    };
     char buf[320];
     for (size_t f = 1; f < F.size(); ++f) {
         // 0. Every source's regions tile the plane: once one is inserted, no domain is uncovered.
@@ -780,20 +799,8 @@ std::string TargetSolver::validate(bool thorough) const {
         if (thorough && (!q || !same_feature_quadratic(*q, L.region, F[f].poly, L.region, delta)))
             return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): the label's quadratic is not the domain's", f,
                                  L.source, region_name(L.region)), buf;
-        // The features tied with it (the same quadratic), through a chain (tie_classes: merging
-        // joins neighbours link by link): the domain may extend over their regions. The polynomial
-        // is still checked against d^2 below.
         // Only the thorough check asks where the domain lies.
-        std::vector<const SourceRegion*> tied;
-        if (thorough) {
-            std::vector<int> seed;
-            for (size_t s = 0; s < proj.size(); ++s)
-                for (const SourceRegion& r : proj[s].regions)
-                    if (same_feature_quadratic(r.poly, r.kind, F[f].poly, L.region, delta)) seed.push_back(classes[feature_index(s, r.kind)]);
-            for (size_t s = 0; s < proj.size(); ++s)
-                for (const SourceRegion& r : proj[s].regions)
-                    if (std::find(seed.begin(), seed.end(), classes[feature_index(s, r.kind)]) != seed.end()) tied.push_back(&r);
-        }
+        const std::vector<const SourceRegion*> tied = thorough ? tied_regions(F[f]) : std::vector<const SourceRegion*>();
         // A face thinner than kTinyChord as a whole (its area below kTinyChord times its size) is a
         // sliver the splits left on one side (find_chords): all of it lies within kTinyChord of its
         // neighbours, wherever its label's region is, so only its polynomial is held (check 2).
@@ -835,8 +842,19 @@ std::string TargetSolver::validate(bool thorough) const {
             // region's lines, 0.003 rad apart, cross 1.4e-5 further on; a point there 3.4e-8 outside
             // the face region's line was 6.9e-6 beyond its bevel, and d^2 right to 4e-9).
             const double reach = std::max(DomainMesh::kVertexTolerance, delta);
-            bool inside = false;
-            for (const SourceRegion* r : tied) inside = inside || region_margin(*r, p, false) >= -(rim ? 4 : 2) * reach;
+            const double slack = (rim ? 4 : 2) * reach;
+            bool inside = in_any(tied, p, slack);
+            // Within kTinyChord of the boundary, a neighbour's label may be the right one: a sliver
+            // that thin goes to either side (find_chords), as a whole face (above) or as the end of
+            // one. Generate_pairs15.py "terrain_crack" 4327: a face's end was a sliver 6e-12 wide
+            // between two region lines along T''s edge, reaching a source corner where three
+            // sources meet; interior_point's probe there lay 6.7e-7 beyond the label's region
+            // (its corner, where an ill-conditioned region line crosses T''s edge) and 4e-10 inside
+            // the neighbour's, 6e-12 away.
+            if (thorough && !inside && !sliver && mesh_->near_boundary((int)f, p, DomainMesh::kTinyChord))
+                for (size_t g = 1; g < F.size() && !inside; ++g)
+                    if (g != f && F[g].alive && !F[g].infinite && mesh_->near_boundary((int)g, p, DomainMesh::kTinyChord))
+                        inside = in_any(tied_regions(F[g]), p, slack);
             if (thorough && !inside && !sliver)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
                                      L.source, region_name(L.region), p.x, p.y), buf;

@@ -3744,3 +3744,108 @@ TEST(Degenerate, LobeAcrossANeckOnTheOtherSideIsPinchedOff) {
     }
 }
 
+
+// Generate_pairs15.py "terrain_crack" 4327: a terrain tile with a skirt 0.01 deep hanging from its
+// border (A) against B's triangle 23 of a continuous terrain, which coincides with it along that
+// border. A skirt triangle nearly perpendicular to T' shares its corner b with two tile triangles
+// on T''s edge. Its face region's line along the border is ill-conditioned (the plane through that
+// edge perpendicular to the skirt is 8.5e-4 rad from T'): it crosses T''s edge 6.7e-7 from b. In
+// the debugger's order the skirt's face domain ends in a sliver 6e-12 wide along T''s edge that
+// reaches b, and interior_point's probe lay there: 6.7e-7 outside the label's region, 4e-10 inside
+// the neighbour's, and validate() called the label wrong. A sliver thinner than kTinyChord may go
+// to either side (the whole-face sliver rule): within kTinyChord of its boundary validate() now
+// also takes a neighbour's label. Oracles: validate() after every insertion in the three orders;
+// at every probe beyond its label's region, the feature nearest by brute force, whose squared
+// distance is the face's polynomial to the rounding; d^2 by brute force at every arc's middle and
+// on a grid.
+TEST(Degenerate, ProbeInATinySliverMayLieInTheNeighboursRegion) {
+    const TriangleMesh A = make_mesh(
+        {{8.0, 2.5, 1.0000633196212387}, {8.0, 2.625, 1.0000804559864218}, {8.0, 2.75, 0.9998356955058298},
+         {8.124999092329809, 2.5, 1.0001103409257561}, {8.124999092329809, 2.625, 0.9999649990745814},
+         {8.124999092329809, 2.75, 0.9998227260927531}, {8.249998184659617, 2.5, 1.0000941247230688},
+         {8.249998184659617, 2.625, 0.9998731089995309}, {8.249998184659617, 2.75, 0.9999113688507376},
+         {8.249998184659617, 2.5, 0.9898614607545015}, {8.249998184659617, 2.625, 0.9896404450309637},
+         {8.249998184659617, 2.75, 0.9896787048821704}, {8.250001815340383, 2.5, 1.000094123472355},
+         {8.250001815340383, 2.5833333333333335, 0.9999496341510222}, {8.250001815340383, 2.6666666666666665, 0.9998336184105459},
+         {8.250001815340383, 2.75, 0.9999113723376621}, {8.333334543560255, 2.5, 1.0000546739882439},
+         {8.333334543560255, 2.5833333333333335, 0.9998942709121781}, {8.333334543560255, 2.6666666666666665, 0.9998507935813645},
+         {8.333334543560255, 2.75, 0.999995028433169}, {8.416667271780128, 2.5, 0.9999961636587429},
+         {8.416667271780128, 2.5833333333333335, 0.9998577816771111}, {8.416667271780128, 2.6666666666666665, 0.9998971519801192},
+         {8.416667271780128, 2.75, 1.0000730626370773}, {8.5, 2.5, 0.999928681088042},
+         {8.5, 2.5833333333333335, 0.9998489332443766}, {8.5, 2.6666666666666665, 0.9999650924813875},
+         {8.5, 2.75, 1.0001333798035636}, {8.250001815340383, 2.5, 0.9898614595037878},
+         {8.250001815340383, 2.5833333333333335, 0.9897169701824551}, {8.250001815340383, 2.6666666666666665, 0.9896009544419786},
+         {8.250001815340383, 2.75, 0.9896787083690949}},
+        {{0, 3, 1},    {3, 4, 1},    {1, 4, 2},    {4, 5, 2},    {3, 6, 4},    {6, 7, 4},    {4, 7, 5},    {7, 8, 5},
+         {6, 7, 10},   {6, 10, 9},   {7, 8, 11},   {7, 11, 10},  {12, 16, 17}, {12, 17, 13}, {13, 17, 18}, {13, 18, 14},
+         {14, 18, 15}, {18, 19, 15}, {16, 20, 17}, {20, 21, 17}, {17, 21, 22}, {17, 22, 18}, {18, 22, 23}, {18, 23, 19},
+         {20, 24, 25}, {20, 25, 21}, {21, 25, 22}, {25, 26, 22}, {22, 26, 27}, {22, 27, 23}, {12, 13, 29}, {12, 29, 28},
+         {13, 14, 30}, {13, 30, 29}, {14, 15, 31}, {14, 31, 30}});
+    const TriangleMesh T = make_mesh({{8.25, 2.6666666666666665, 0.9998336184208956},
+                                      {8.333333333333334, 2.75, 0.9999950272186962},
+                                      {8.25, 2.75, 0.9999113705941962}},
+                                     {{0, 1, 2}});
+    int beyond = 0;  // probes beyond their label's region by more than validate()'s rim allowance
+    expect_constructions_hold(T, A, [&](const TargetSolver& ts) {
+        const DomainMesh& m = *ts.domain_mesh();
+        const TargetFrame& fr = ts.frame();
+        for (size_t f = 1; f < m.faces().size(); ++f) {
+            const DomainMesh::Face& F = m.faces()[f];
+            Vec2 p;
+            if (!F.alive || F.infinite || !m.interior_point((int)f, p)) continue;
+            const SourceProjection own = project_source(fr, A.corners(F.label.source), F.label.source);
+            double margin = HUGE_VAL;
+            for (const SourceRegion& r : own.regions)
+                if (r.kind == F.label.region) margin = region_margin(r, p, false);
+            if (margin >= -4 * DomainMesh::kVertexTolerance) continue;
+            ++beyond;
+            EXPECT_TRUE(m.near_boundary((int)f, p, DomainMesh::kTinyChord)) << "face " << f;
+            // The nearest feature by brute force is another one, as near as the label's quadratic
+            // says to the frame's rounding (its coefficients are about 0.5, rounded to 1e-16).
+            NearestFeature best;
+            for (uint32_t s = 0; s < A.num_triangles(); ++s) {
+                const std::array<Vec3, 3> c = source_in_frame(fr, A.corners(s));
+                const NearestFeature nf = nearest_feature(Vec3(p.x, p.y, 0), c[0], c[1], c[2]);
+                if (nf.d2 < best.d2) best = nf;
+            }
+            EXPECT_NEAR(F.poly(p), best.d2, 1e-15) << "face " << f;
+            EXPECT_NEAR(brute_d2(fr, A, p), best.d2, 1e-15) << "face " << f;
+        }
+        int arcs = 0;
+        EXPECT_EQ(arc_middles_off_d2(m, fr, A, arcs), 0);
+        EXPECT_EQ(grid_points_off_d2(m, fr, A, 300, 1e-9), 0);
+    });
+    EXPECT_GT(beyond, 0);  // the case is there
+}
+
+// Generate_pairs15.py "lod_sphere" 6858 (side B, target 0, nearest first; three of A's triangles):
+// a square's half against a sphere's patch of radius 4.9e8, both flat to 5e-10. A source's edge
+// region line runs 2.7e-10 inside T''s edge along a domain's side of it, and the boundary between
+// the chord's ends passes a conic's tip 1.5e-7 outside T', a little beyond what hugging allows.
+// The chord was inserted; the piece it cut off, of no area to the rounding, came out inside out (a
+// hole of the face), and the next split, by the bisector of two parallel edges, met the chord
+// instead of T''s edge and gave that sliver whole to one side: d^2 0.01125 beside 0.00125 along
+// T''s edge. Now no chord is made whose piece beyond is thinner than kTinyChord and within twice
+// kCluster of it (DomainMesh::thin_beyond_chord). Oracles: validate() after every insertion in the
+// three orders; d^2 by brute force at every arc's middle and on a grid.
+TEST(Degenerate, NoChordCutsOffAPieceOfNoArea) {
+    const TriangleMesh T = make_mesh({{-3.75, -2.5000000005070917, 0.75}, {-3.75, -2.5000000005070917, 1.75},
+                                      {-2.75, -2.5000000005070917, 0.75}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{-2.9500000000000002, -2.5000000003448224, 0.75},
+                                      {-2.9500000000756308, -2.5000000001825531, 0.95000000044553023},
+                                      {-2.75, -2.5000000005070917, 0.75},
+                                      {-3.5499999999999998, -2.5000000003448224, 0.75},
+                                      {-3.3499999995128218, -2.5000000001014184, 0.95000000001058571},
+                                      {-3.3500000000000001, -2.5000000002636877, 0.75},
+                                      {-3.1499999999999999, -2.5000000002636877, 0.75},
+                                      {-3.1499999994504058, -2.5000000001014184, 0.95000000042202204},
+                                      {-2.9500000000000002, -2.5000000003448224, 0.75}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+    expect_constructions_hold(T, S, [&](const TargetSolver& ts) {
+        int arcs = 0;
+        EXPECT_EQ(arc_middles_off_d2(*ts.domain_mesh(), ts.frame(), S, arcs), 0);
+        EXPECT_GT(arcs, 3);
+        EXPECT_EQ(grid_points_off_d2(ts, S, 300, 1e-9), 0);
+    }, true);
+}
