@@ -783,6 +783,15 @@ std::string TargetSolver::validate(bool thorough) const {
             if (region_margin(*r, p, false) >= -slack) return true;
         return false;
     };
+    // Whether p lies within kTinyChord of face f's boundary and `pred` holds for a neighbour face
+    // there: a sliver that thin is cut by no chord (find_chords), so there either side may be right.
+    auto neighbour_within_tiny_chord = [&](size_t f, Vec2 p, const auto& pred) {
+        if (!mesh_->near_boundary((int)f, p, DomainMesh::kTinyChord)) return false;
+        for (size_t g = 1; g < F.size(); ++g)
+            if (g != f && F[g].alive && !F[g].infinite && mesh_->near_boundary((int)g, p, DomainMesh::kTinyChord) && pred(F[g]))
+                return true;
+        return false;
+    };
     char buf[320];
     for (size_t f = 1; f < F.size(); ++f) {
         // 0. Every source's regions tile the plane: once one is inserted, no domain is uncovered.
@@ -824,9 +833,17 @@ std::string TargetSolver::validate(bool thorough) const {
             const bool rim = mesh_->near_boundary((int)f, p, 2 * DomainMesh::kVertexTolerance);
             // 2. The polynomial is d^2 there, computed directly.
             const double poly = F[f].poly(p), direct = direct_d2(p);
-            const double resolution =
-                rim ? (norm(F[f].poly.gradient(p)) + 2 * std::sqrt(std::max(0.0, direct))) * 2 * DomainMesh::kVertexTolerance : 0.0;
-            if (std::fabs(poly - direct) > 1e-7 * direct + 16 * noise + resolution + F[f].tie_slack)
+            auto fits = [&](const DomainMesh::Face& g, bool near_rim) {
+                const double resolution =
+                    near_rim ? (norm(g.poly.gradient(p)) + 2 * std::sqrt(std::max(0.0, direct))) * 2 * DomainMesh::kVertexTolerance : 0.0;
+                return std::fabs(g.poly(p) - direct) <= 1e-7 * direct + 16 * noise + resolution + g.tie_slack;
+            };
+            // Within kTinyChord of the boundary, a neighbour's polynomial may be the right one (as
+            // its label may be, check 3). Generate_pairs15.py "float32_far" 3640, nearest first: a
+            // strip of an edge's domain along T''s edge ends in a sliver 8e-13 wide at T''s
+            // corner; a plane inserted later is nearer over its last 4e-7 (5.5e-13 where its
+            // polynomial is 2.2e-12), and the probe beside its 1e-12 arc at the corner lay there.
+            if (!fits(F[f], rim) && !neighbour_within_tiny_chord(f, p, [&](const DomainMesh::Face& g) { return fits(g, true); }))
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): polynomial %.12g but d^2 = %.12g at (%.9g, %.9g)", f,
                                      L.source, region_name(L.region), poly, direct, p.x, p.y), buf;
             // 3. The point lies in the region of the label's feature or of one tied with it, up to
@@ -845,16 +862,14 @@ std::string TargetSolver::validate(bool thorough) const {
             const double slack = (rim ? 4 : 2) * reach;
             bool inside = in_any(tied, p, slack);
             // Within kTinyChord of the boundary, a neighbour's label may be the right one: a sliver
-            // that thin goes to either side (find_chords), as a whole face (above) or as the end of
-            // one. Generate_pairs15.py "terrain_crack" 4327: a face's end was a sliver 6e-12 wide
+            // that thin goes to either side, as a whole face (above) or as the end of one.
+            // Generate_pairs15.py "terrain_crack" 4327: a face's end was a sliver 6e-12 wide
             // between two region lines along T''s edge, reaching a source corner where three
             // sources meet; interior_point's probe there lay 6.7e-7 beyond the label's region
             // (its corner, where an ill-conditioned region line crosses T''s edge) and 4e-10 inside
             // the neighbour's, 6e-12 away.
-            if (thorough && !inside && !sliver && mesh_->near_boundary((int)f, p, DomainMesh::kTinyChord))
-                for (size_t g = 1; g < F.size() && !inside; ++g)
-                    if (g != f && F[g].alive && !F[g].infinite && mesh_->near_boundary((int)g, p, DomainMesh::kTinyChord))
-                        inside = in_any(tied_regions(F[g]), p, slack);
+            if (thorough && !inside && !sliver)
+                inside = neighbour_within_tiny_chord(f, p, [&](const DomainMesh::Face& g) { return in_any(tied_regions(g), p, slack); });
             if (thorough && !inside && !sliver)
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
                                      L.source, region_name(L.region), p.x, p.y), buf;

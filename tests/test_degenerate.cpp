@@ -3849,3 +3849,73 @@ TEST(Degenerate, NoChordCutsOffAPieceOfNoArea) {
         EXPECT_EQ(grid_points_off_d2(ts, S, 300, 1e-9), 0);
     }, true);
 }
+
+// Generate_pairs15.py "float32_far" 3640 (B's target 15 and three of A's triangles; the paper's
+// order and nearest first): a torus and its jittered copy, rounded to float32, 2906 from the
+// origin. A strip of the first source's edge domain along T''s edge ends in a sliver 8e-13 wide
+// at T''s corner, too thin for any chord (kTinyChord); the third source, a plane, is nearer over
+// its last 4e-7 (5.5e-13 of T''s size squared where the edge's polynomial is 2.2e-12), and the
+// probe beside the sliver's 1e-12 arc at the corner lay there. Not a fault of
+// the construction's resolution (a sliver that thin goes to either side): within kTinyChord of its
+// face's boundary, validate() now takes a neighbour's polynomial as it takes a neighbour's label.
+// Oracles: at every probe whose polynomial misses d^2 by brute force (in coordinates moved by
+// T''s corner) beyond the rim allowance, found and counted: the probe within kTinyChord of its
+// boundary, a neighbour there whose polynomial is d^2, and on a lattice 1e-9 apart within 1e-6 of
+// it every point of the face where the polynomial misses d^2 within kTinyChord of its boundary
+// (the part that misses is a sliver 8e-13 wide and 4e-7 long).
+TEST(Degenerate, SliverEndThinnerThanATinyChordMayHoldTheNeighboursPolynomial) {
+    const TriangleMesh T = make_mesh({{4.9040770530700684, 2906.44921875, 0.60072481632232666},
+                                      {4.8081531524658203, 2906.282958984375, 0.39927482604980469},
+                                      {4.9040770530700684, 2906.44921875, 0.3992750346660614}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{4.9040765762329102, 2906.44921875, 0.60072499513626099},
+                                      {4.8081536293029785, 2906.282958984375, 0.3992750346660614},
+                                      {4.9040765762329102, 2906.44921875, 0.3992750346660614},
+                                      {4.9040765762329102, 2906.44921875, 0.3992750346660614},
+                                      {4.8081536293029785, 2906.282958984375, 0.3992750346660614},
+                                      {4.8168463706970215, 2906.60009765625, 0.5},
+                                      {5.0959234237670898, 2906.44921875, 0.60072499513626099},
+                                      {4.9040765762329102, 2906.44921875, 0.3992750346660614},
+                                      {5.0959234237670898, 2906.44921875, 0.3992750346660614}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+    const Vec3 o = T.corners(0)[0];
+    const TriangleMesh Sn = shifted(S, -1.0 * o);
+    int missed = 0;          // probes whose polynomial misses d^2 beyond the rim allowance
+    int lattice_misses = 0;  // lattice points that do (the sliver is 8e-13 wide: a few fall in it)
+    expect_constructions_hold(T, S, [&](const TargetSolver& ts) {
+        const DomainMesh& m = *ts.domain_mesh();
+        const TargetFrame near = TargetFrame::make(shifted(T, -1.0 * o).corners(0));
+        ASSERT_EQ(near.scale, ts.frame().scale);
+        auto d2_at = [&](Vec2 p) { return brute_d2(near, Sn, p); };
+        auto allowance = [&](const DomainMesh::Face& F, Vec2 p, double d2) {
+            return (norm(F.poly.gradient(p)) + 2 * std::sqrt(d2)) * 2 * DomainMesh::kVertexTolerance + 1e-3 * d2;
+        };
+        for (size_t f = 1; f < m.faces().size(); ++f) {
+            const DomainMesh::Face& F = m.faces()[f];
+            Vec2 p;
+            if (!F.alive || F.infinite || !m.interior_point((int)f, p)) continue;
+            const double d2 = d2_at(p);
+            if (std::fabs(F.poly(p) - d2) <= allowance(F, p, d2)) continue;
+            ++missed;
+            EXPECT_TRUE(m.near_boundary((int)f, p, DomainMesh::kTinyChord)) << "face " << f;
+            int neighbours = 0;
+            for (size_t g = 1; g < m.faces().size(); ++g)
+                if (g != f && m.faces()[g].alive && !m.faces()[g].infinite && m.near_boundary((int)g, p, DomainMesh::kTinyChord))
+                    neighbours += std::fabs(m.faces()[g].poly(p) - d2) <= 1e-3 * d2;
+            EXPECT_GT(neighbours, 0) << "face " << f;
+            int off = 0;  // lattice points of the face that miss d^2 farther than kTinyChord inside it
+            for (int j = -1000; j <= 1000; ++j)
+                for (int i = -1000; i <= 1000; ++i) {
+                    const Vec2 q{p.x + i * 1e-9, p.y + j * 1e-9};
+                    if (!m.point_in_face((int)f, q)) continue;
+                    const double e2 = d2_at(q);
+                    if (std::fabs(F.poly(q) - e2) <= allowance(F, q, e2)) continue;
+                    ++lattice_misses;
+                    off += !m.near_boundary((int)f, q, DomainMesh::kTinyChord);
+                }
+            EXPECT_EQ(off, 0) << "face " << f;
+        }
+    });
+    EXPECT_GT(missed, 0);  // the case is there
+    EXPECT_GT(lattice_misses, 0);
+}
