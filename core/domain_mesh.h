@@ -300,6 +300,7 @@ private:
     bool flat_boundary_edge(const SplitCall& s, int u, int v) const;
     bool foot_in_face(int f, Vec2 q) const;
     bool short_chord_inside(int f, const Chord& c, Vec2 mid) const;
+    template <class Near> bool path_stays_near(int from, int to, const Near& near) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;
     bool thin_beyond_chord(int f, const Chord& c) const;
     bool chord_past_departure(const SplitCall& s, const Chord& c, double tol, Chord& out) const;

@@ -1506,6 +1506,18 @@ bool DomainMesh::noise_chord_hugged(int f, const CurveComponent& comp, const Cho
     return len <= kOffCurve && off >= 0.5 * len && straight_chord(c.va, c.vb, straight) && boundary_hugs_chord(f, straight, kCluster);
 }
 
+// Whether the boundary path from half-edge `from` to vertex `to` passes `near` at the middle of each
+// of its arcs and at each vertex between its ends.
+template <class Near>
+bool DomainMesh::path_stays_near(int from, int to, const Near& near) const {
+    for (int k = from, n = 0; n < 1000000; k = half_[k].next, ++n) {
+        const Edge& E = edges_[k >> 1];
+        if (!near(E.curve(0.5 * (E.z0 + E.z1))) || (k != from && !near(vertices_[half_[k].origin].p))) return false;
+        if (target(k) == to) break;
+    }
+    return true;
+}
+
 // One of the two boundary paths of face f between the chord's ends stays within tol of the chord's
 // curve (vertices and the middles of arcs): the chord adds nothing there. Ends on different loops
 // (a hole) count as hugging: such a chord was always dropped.
@@ -1536,15 +1548,8 @@ bool DomainMesh::boundary_hugs_chord(int f, const Chord& c, double tol) const {
         } while (h != start && ++guard < 1000000);
         if (ha < 0 && hb < 0) continue;
         if (ha < 0 || hb < 0) return true;
-        for (auto [from, to] : {std::pair{ha, c.vb}, std::pair{hb, c.va}}) {
-            bool hugs = true;
-            for (int k = from, n = 0; hugs && n < 1000000; k = half_[k].next, ++n) {
-                const Edge& E = edges_[k >> 1];
-                hugs = near_curve(E.curve(0.5 * (E.z0 + E.z1))) && (k == from || near_curve(vertices_[half_[k].origin].p));
-                if (target(k) == to) break;
-            }
-            if (hugs) return true;
-        }
+        for (auto [from, to] : {std::pair{ha, c.vb}, std::pair{hb, c.va}})
+            if (path_stays_near(from, to, near_curve)) return true;
         return false;
     }
     return true;
@@ -1562,18 +1567,12 @@ bool DomainMesh::boundary_hugs_chord(int f, const Chord& c, double tol) const {
 bool DomainMesh::thin_beyond_chord(int f, const Chord& c) const {
     int ha, hb;
     if (c.comp.kind != CurveKind::Line || c.va < 0 || c.va == c.vb || !once_on_one_loop(f, c.va, c.vb, ha, hb)) return false;
-    const double reach = 2 * kCluster;
+    auto near = [&](Vec2 p) { return off_component(c.comp, p) <= 2 * kCluster; };
     for (auto [from, to] : {std::pair{ha, c.vb}, std::pair{hb, c.va}}) {
         Box2 box;
-        const double area = path_area(from, to, box);
-        if (!(std::fabs(area) <= kTinyChord * norm(box.hi - box.lo))) continue;
-        bool close = true;
-        for (int k = from, n = 0; close && n < 1000000; k = half_[k].next, ++n) {
-            const Edge& E = edges_[k >> 1];
-            close = off_component(c.comp, E.curve(0.5 * (E.z0 + E.z1))) <= reach && off_component(c.comp, vertices_[target(k)].p) <= reach;
-            if (target(k) == to) break;
-        }
-        if (close) return true;
+        if (std::fabs(path_area(from, to, box)) <= kTinyChord * norm(box.hi - box.lo) && path_stays_near(from, to, near) &&
+            near(vertices_[to].p))
+            return true;
     }
     return false;
 }

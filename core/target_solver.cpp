@@ -860,7 +860,6 @@ std::string TargetSolver::validate(bool thorough) const {
             // the face region's line was 6.9e-6 beyond its bevel, and d^2 right to 4e-9).
             const double reach = std::max(DomainMesh::kVertexTolerance, delta);
             const double slack = (rim ? 4 : 2) * reach;
-            bool inside = in_any(tied, p, slack);
             // Within kTinyChord of the boundary, a neighbour's label may be the right one: a sliver
             // that thin goes to either side, as a whole face (above) or as the end of one.
             // Generate_pairs15.py "terrain_crack" 4327: a face's end was a sliver 6e-12 wide
@@ -868,9 +867,8 @@ std::string TargetSolver::validate(bool thorough) const {
             // sources meet; interior_point's probe there lay 6.7e-7 beyond the label's region
             // (its corner, where an ill-conditioned region line crosses T''s edge) and 4e-10 inside
             // the neighbour's, 6e-12 away.
-            if (thorough && !inside && !sliver)
-                inside = neighbour_within_tiny_chord(f, p, [&](const DomainMesh::Face& g) { return in_any(tied_regions(g), p, slack); });
-            if (thorough && !inside && !sliver)
+            if (thorough && !sliver && !in_any(tied, p, slack) &&
+                !neighbour_within_tiny_chord(f, p, [&](const DomainMesh::Face& g) { return in_any(tied_regions(g), p, slack); }))
                 return std::snprintf(buf, sizeof buf, "face %zu (source %d, %s): (%.9g, %.9g) lies outside the label's region", f,
                                      L.source, region_name(L.region), p.x, p.y), buf;
         }
