@@ -303,6 +303,7 @@ private:
     template <class Near> bool path_stays_near(int from, int to, const Near& near) const;
     bool boundary_hugs_chord(int f, const Chord& c, double tol) const;
     bool thin_beyond_chord(int f, const Chord& c) const;
+    bool real_sliver_beside_chord(const SplitCall& s, const Chord& c) const;
     bool chord_past_departure(const SplitCall& s, const Chord& c, double tol, Chord& out) const;
     int loop_of(int f, int v) const;
     void close_hole_crossings(SplitCall& s);

@@ -3919,3 +3919,78 @@ TEST(Degenerate, SliverEndThinnerThanATinyChordMayHoldTheNeighboursPolynomial) {
     EXPECT_GT(missed, 0);  // the case is there
     EXPECT_GT(lattice_misses, 0);
 }
+
+// A curved chord within kCluster of the face's boundary, but the boundary certainly on one side of
+// it all along (every arc farther from the curve than the rounding allows, the farthest a quarter
+// of kCluster): a real sliver, cut off, not dropped as hugging the boundary
+// (DomainMesh::real_sliver_beside_chord). Two boxes' edges 1.1e-7 apart: the nearer won the farther
+// one's domain whole and its arc with a third edge's domain stayed on the old curve, 8.5e-8 off;
+// the third's chord along it was dropped, and the sliver between kept the third's quadratic, up to
+// 2e-8 above d^2; a plane parallel to T' then took part of it and stepped d^2 by 1.2e-8 at its arc
+// (generate_pairs15.py "box_union" 2061, side B, target 14, the 10th and 11th insertions, the
+// paper's and the debugger's orders). validate() after each insertion (without the change, "d^2
+// jumps by 1.17759e-08" after the 11th); oracle: brute force on a grid 1e-8 apart round the sliver
+// from the 10th insertion, every point's domain within 1e-11 of d^2 (without the change 1811 points
+// are off, by up to 2e-8), and on a grid over T'.
+TEST(Degenerate, CurvedChordBesideTheBoundaryCutsOffARealSliver) {
+    const TriangleMesh T = make_mesh({{0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {-0.055172724400882556, 0.95528927508161565, -0.84876014375631426},
+                                      {1.0014238161040061, 1.000307778717177, -0.99776378439477842}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {0.26620068066002273, 0.96534266149878623, -1.1884188485539982},
+                                      {0.26864014922060525, 1.0791336478729587, -1.1367406885938314},
+                                      {0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {0.26864014922060525, 1.0791336478729587, -1.1367406885938314},
+                                      {0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {-0.055172724400882556, 0.95528927508161565, -0.84876014375631426},
+                                      {0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {-0.055172724400882556, 0.95528927508161565, -0.84876014375631426},
+                                      {-0.057612192961465081, 0.84149828870744314, -0.90043830371648093},
+                                      {0.021939458365555803, 0.99161795121738017, -1.2347444832870158},
+                                      {-0.057612192961465081, 0.84149828870744314, -0.90043830371648093},
+                                      {0.26620068066002273, 0.96534266149878623, -1.1884188485539982},
+                                      {-0.057612192961465081, 0.84149828870744314, -0.90043830371648093},
+                                      {0.18664902933300187, 0.81522299898884909, -0.85411266898346327},
+                                      {0.26620068066002273, 0.96534266149878623, -1.1884188485539982},
+                                      {0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {-0.055172724400882556, 0.95528927508161565, -0.84876014375631426},
+                                      {0.18908849789358442, 0.92901398536302171, -0.80243450902329649},
+                                      {0.024378926926138328, 1.1054089375915526, -1.1830663233268492},
+                                      {0.18908849789358442, 0.92901398536302171, -0.80243450902329649},
+                                      {0.26864014922060525, 1.0791336478729587, -1.1367406885938314},
+                                      {0.2662006784589348, 0.96534255882725695, -1.1884188951822583},
+                                      {0.87685373419510215, 0.89965433453077215, -1.0726048083497142},
+                                      {0.87685373639619013, 0.89965443720230132, -1.072604761721454},
+                                      {0.2662006784589348, 0.96534255882725695, -1.1884188951822583},
+                                      {0.87685373639619013, 0.89965443720230132, -1.072604761721454},
+                                      {0.26620068066002273, 0.96534266149878623, -1.1884188485539982},
+                                      {0.2662006784589348, 0.96534255882725695, -1.1884188951822583},
+                                      {0.79730208286808124, 0.74953467202083501, -0.73829862877917918},
+                                      {0.87685373419510215, 0.89965433453077215, -1.0726048083497142}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 17}, {18, 19, 20}, {21, 22, 23}, {24, 25, 26}, {27, 28, 29}, {30, 31, 32}});  // in the order inserted
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    for (bool watched : {false, true}) {
+        DomainMesh mesh(fr.ccw_corners());
+        DomainMesh::Listener watch;  // the paper's insertion, every cut reported: the debugger's
+        for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+            mesh.insert(project_source(fr, S.corners(s), s), {}, watched ? &watch : nullptr);
+            EXPECT_EQ(mesh.validate(), "") << "after source " << s << (watched ? ", watched" : "");
+            if (s < 9) continue;  // the sliver is there from the 10th insertion
+            int in = 0, off = 0;
+            for (int i = -100; i <= 100; ++i)
+                for (int j = -100; j <= 100; ++j) {
+                    const Vec2 p{0.452015 + 1e-8 * i, 0.205373 + 1e-8 * j};  // the sliver's arc runs through it
+                    const int f = mesh.face_at(p);
+                    if (f <= 0) continue;
+                    ++in;
+                    off += std::abs(mesh.faces()[f].poly(p) - brute_d2(fr, S, p)) > 1e-11;
+                }
+            EXPECT_GT(in, 30000);
+            EXPECT_EQ(off, 0) << "after source " << s << (watched ? ", watched" : "");
+        }
+        EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-9), 0);
+    }
+}
