@@ -1596,11 +1596,11 @@ bool DomainMesh::real_sliver_beside_chord(const SplitCall& s, const Chord& c) co
     auto near = [&](Vec2 p) { return off_component(c.comp, p) <= kCluster; };
     for (auto [from, to] : {std::pair{ha, c.vb}, std::pair{hb, c.va}}) {
         if (!path_stays_near(from, to, near)) continue;
-        double v, lo = HUGE_VAL, hi = -HUGE_VAL, far = 0;
-        int marked = 0;
+        double v, lo = HUGE_VAL, hi = -HUGE_VAL;  // over the marked arcs (none: lo > hi)
         for (int k = from; half_[k].origin != to; k = half_[k].next)
-            if (s.side_of(k, v)) lo = std::min(lo, v), hi = std::max(hi, v), far = std::max(far, std::fabs(v)), ++marked;
-        if (marked > 0 && (lo > certain || hi < -certain) && far >= 0.25 * kCluster) return true;
+            if (s.side_of(k, v)) lo = std::min(lo, v), hi = std::max(hi, v);
+        // All on one side: the nearest beyond `certain`, the farthest a quarter of kCluster off.
+        if (std::max(lo, -hi) > certain && std::max(hi, -lo) >= 0.25 * kCluster) return true;
     }
     return false;
 }
