@@ -579,6 +579,46 @@ void DomainMesh::update_maxima(std::vector<Candidate>& out) {
 
 // ---------------------------------------------------------------- invariants
 
+// How far the quadratics of faces F and G may differ at p on an arc between them (validate).
+double DomainMesh::jump_allowance(int F, int G, Vec2 p) const {
+    const Quadratic2 &qF = faces_[F].poly, &qG = faces_[G].poly;
+    const double pos = std::max(kOffCurve, delta_);
+    const double rounding = rounding_allowance(std::max(qF.scale(), qG.scale()), delta_);
+    return pos * (norm(qF.gradient(p)) + norm(qG.gradient(p))) + pos * pos + rounding + 1e-13 * (qF.scale() + qG.scale()) +
+           faces_[F].tie_slack + faces_[G].tie_slack;
+}
+
+// The arc e between F and G, at its middle m, has a sliver on one side, X (F or G), narrower than
+// the precision to which a split places a vertex on a curve (kOnCurve in domain_split.cpp, 1e-8):
+// another arc of X, to a face H, passes that close. The construction cannot tell such a sliver's
+// side, and it may carry a polynomial off d^2 within its width times the gradients; d^2 is
+// continuous across it if X agrees with H to that, and H with the other side, Y, as across an arc
+// between them. (Generate_pairs15.py "box_union" 10323, the debugger's order: where a plane
+// parallel to T' and two box edges are within 3.2e-10 of each other in d^2, the plane's domain
+// kept a sliver at most 4e-10 wide along an edge's arc, where the other edge is nearer by 1.2e-10:
+// a step across that arc, though the domains on either side of the sliver meet within rounding.
+// A sliver 5.9e-8 wide, generate_pairs15.py 2061, is resolved instead: real_sliver_beside_chord;
+// with kCluster here rather than 1e-8, its step would have passed.)
+bool DomainMesh::sliver_beside_arc(int F, int G, int e, Vec2 m) const {
+    constexpr double kUnresolvedSliver = 1e-8;
+    for (int pass = 0; pass < 2; ++pass) {
+        const int X = pass == 0 ? F : G, Y = pass == 0 ? G : F;
+        const Quadratic2& qX = faces_[X].poly;
+        bool explained = false;
+        for_each_half_edge(X, [&](int h) {
+            if (explained || (h >> 1) == e || !near_arc(h, m, kUnresolvedSliver)) return;
+            const int H = half_[h ^ 1].face;
+            if (H <= 0 || H == X || faces_[H].infinite) return;
+            const Quadratic2& qH = faces_[H].poly;
+            const double across = kUnresolvedSliver * (norm(qX.gradient(m)) + norm(qH.gradient(m))) + 1e-13 * (qX.scale() + qH.scale()) +
+                                  rounding_allowance(std::max(qX.scale(), qH.scale()), delta_) + faces_[X].tie_slack + faces_[H].tie_slack;
+            explained = std::fabs(qX(m) - qH(m)) <= across && (H == Y || std::fabs(qH(m) - faces_[Y].poly(m)) <= jump_allowance(H, Y, m));
+        });
+        if (explained) return true;
+    }
+    return false;
+}
+
 std::string DomainMesh::validate(double area_tol) const {
     char buf[256];
     for (size_t h = 0; h < half_.size(); ++h) {
@@ -641,10 +681,7 @@ std::string DomainMesh::validate(double area_tol) const {
         // shared region line, where d^2 is 0.41 and has no gradient.
         const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
         const double jump = std::fabs(qF(m) - qG(m));
-        const double pos = std::max(kOffCurve, delta_);
-        const double rounding = rounding_allowance(std::max(qF.scale(), qG.scale()), delta_);
-        const double tol = pos * (norm(qF.gradient(m)) + norm(qG.gradient(m))) + pos * pos + rounding +
-                           1e-13 * (qF.scale() + qG.scale()) + faces_[F].tie_slack + faces_[G].tie_slack;
+        const double tol = jump_allowance(F, G, m);
         // Nor where another arc of F or G passes within kTinyChord of m: there one of them is a
         // sliver thinner than a chord the splits insert (find_chords), which stays on the side of
         // the rest of its face, whatever its polynomial (as a face that thin as a whole,
@@ -652,7 +689,8 @@ std::string DomainMesh::validate(double area_tol) const {
         // corner region, a wedge 5e-7 wide per unit, crossed by another needle's region line where
         // it was 3e-12 wide; the wedge's tip below the line, 5.4e-6 long, kept the edge region
         // above, d^2 7e-12 by its polynomial beside 0 (the needle lies in T''s plane).
-        if (jump > tol && !near_boundary(F, m, kTinyChord, (int)e) && !near_boundary(G, m, kTinyChord, (int)e))
+        if (jump > tol && !near_boundary(F, m, kTinyChord, (int)e) && !near_boundary(G, m, kTinyChord, (int)e) &&
+            !sliver_beside_arc(F, G, (int)e, m))
             return std::snprintf(buf, sizeof buf, "faces %d and %d: d^2 jumps by %g across edge %zu (%g and %g)", F, G, jump, e,
                                  qF(m), qG(m)), buf;
     }

@@ -238,7 +238,7 @@ private:
         std::vector<SplitPiece> line_first, line_second;  // split_by_line_pair
         std::vector<int> loop_ends;
         std::vector<std::pair<double, int>> pts;
-        std::vector<int> verts, es, wedge_cands;
+        std::vector<int> verts, es, wedge_cands, thin_cands;
         // insert_chords: each chord's path (flat, with offsets), the face's links before them, and
         // each path end's hook: its wedges and the one taken (rehook_chords retries the others).
         std::vector<int> path_es, path_verts, path_es_off, path_verts_off, links_before;
@@ -269,12 +269,14 @@ private:
     template <class Fn> void for_each_in_loop(int start, Fn&& fn) const;  // one loop, from `start`
     void collect_half_edges(int f, std::vector<int>& out) const;
     bool near_arc(int h, Vec2 p, double tol) const;  // p within tol of half-edge h's arc
+    double jump_allowance(int F, int G, Vec2 p) const;
+    bool sliver_beside_arc(int F, int G, int e, Vec2 m) const;
 
     // The clipping primitive (domain_split.cpp): split_face_into runs these steps on one SplitCall.
     struct SplitCall;
     // `quad`: where g is a difference of two quadratics, the larger of their quadratic parts'
     // quad_scale(): g's part is exact only to an ulp of it.
-    void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out, double quad = 0);
+    void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out, double quad = 0, double operands = 0);
     bool split_by_line_pair(int f, const Quadratic2& g, double l2_rounding, std::vector<SplitPiece>& out);
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);
@@ -372,6 +374,7 @@ private:
     bool noise_chord_hugged(int f, const CurveComponent& comp, const Chord& c) const;
     int find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose);
     bool loose_tangent(int h) const;
+    bool thin_loop(int h, size_t guard) const;
     int past_connector(int h) const;
     bool sides_part_at(const SplitCall& s, int va, int vb) const;
     double certain_side(const SplitCall& s) const;

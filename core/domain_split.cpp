@@ -49,6 +49,24 @@ Quadratic2 tangent_line(const Quadratic2& g, Vec2 p) {
     return Quadratic2{0, 0, 0, 0.5 * n.x, 0.5 * n.y, g(p) - dot(n, p)};
 }
 
+// The sign of g (scaled to unit size) over box b where g is l1 (X - X0)^2, a double line, to within
+// r there (X, Y along g's eigenvectors, the smaller eigenvalue l2 within l2_rounding): 0 where it is
+// not. Such a g is the difference of a corner's quadratic and an edge's through that corner, or of
+// an edge's and a plane's holding that edge: a square, where rounding leaves a parabola or two
+// parallel lines as thin as r allows (split_face_into).
+int double_line_sign(const Quadratic2& g, const Box2& b, double l2_rounding, double r) {
+    const double theta = 0.5 * std::atan2(2 * g.b, g.a - g.c);
+    Vec2 e1{std::cos(theta), std::sin(theta)}, e2{-e1.y, e1.x};
+    auto quad = [&](Vec2 e) { return g.a * e.x * e.x + 2 * g.b * e.x * e.y + g.c * e.y * e.y; };
+    double l1 = quad(e1), l2 = quad(e2);
+    if (std::fabs(l2) > std::fabs(l1)) std::swap(l1, l2), std::swap(e1, e2);
+    if (!(std::fabs(l1) > 0) || !(std::fabs(l2) <= std::max(1e-14, l2_rounding))) return 0;
+    const double b1 = g.d * e1.x + g.e * e1.y, b2 = g.d * e2.x + g.e * e2.y, k = g.f - b1 * b1 / l1;
+    double ymax = 0;  // g = l1 (X + b1 / l1)^2 + l2 Y^2 + 2 b2 Y + k
+    for (Vec2 c : {b.lo, b.hi, Vec2{b.lo.x, b.hi.y}, Vec2{b.hi.x, b.lo.y}}) ymax = std::max(ymax, std::fabs(dot(c, e2)));
+    return std::fabs(l2) * ymax * ymax + 2 * std::fabs(b2) * ymax + std::fabs(k) <= r ? (l1 > 0 ? 1 : -1) : 0;
+}
+
 // How far p is from the point of `comp` at p's parameter (its foot on a line; near a conic, close
 // to its distance from it).
 double off_component(const CurveComponent& comp, Vec2 p) { return norm(comp.at(comp.param_of(p)) - p); }
@@ -134,6 +152,28 @@ int DomainMesh::past_connector(int h) const {
     return edges_[h >> 1].connector && n >= 0 && n != (h ^ 1) && edges_[n >> 1].alive ? n : h;
 }
 
+// The loop through half-edge h encloses an area of at most kCluster/2 times its perimeter (a strip
+// up to kCluster wide, a lens of two arcs that close): its wedges' tangents order nothing
+// (find_wedge). False where the loop is not closed yet (a path hooked at one end only,
+// insert_path) or longer than `guard` half-edges.
+bool DomainMesh::thin_loop(int h0, size_t guard) const {
+    double area = 0, length = 0;
+    int h = h0;
+    size_t n = 0;
+    do {
+        if (h < 0 || !edges_[h >> 1].alive || ++n > guard) return false;
+        const Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
+        area += 0.5 * cross(a, b);
+        length += norm(b - a);
+        if (!edges_[h >> 1].curve.straight()) {
+            const double seg = arc_geometry(h >> 1).segment;
+            area += (h & 1) ? -seg : seg;
+        }
+        h = half_[h].next;
+    } while (h != h0);
+    return std::fabs(area) <= 0.5 * kCluster * length;
+}
+
 int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 dir, Vec2 dir2, bool dir_loose) {
     std::vector<int>& cands = tmp_.wedge_cands;
     cands.clear();
@@ -141,6 +181,17 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
         if (half_[h].face == face && half_[h].next >= 0 && edges_[h >> 1].alive && target(h) == v) cands.push_back(h);
     if (cands.size() == 1) return cands[0];
     if (cands.empty()) return -1;
+    // A wedge of a thin loop (a lens 2.5e-8 wide touching the face's other loop at v) may span
+    // almost the whole turn by its tangents, one of them a bridge edge 2.5e-8 long: where another
+    // loop's wedge is there, the direction goes into one of those (generate_pairs15.py "box_union"
+    // 9594, the paper's order: a line pair's bisector chord, leaving v 0.004 rad outside the outer
+    // loop's wedge, went into a lens's of 5.5 rad and joined the lens instead of cutting the face;
+    // a domain where a nearer source's edge was not split off, d^2 up to 0.1 too high).
+    std::vector<int>& thin = tmp_.thin_cands;
+    thin.assign(cands.size(), 0);
+    size_t n_thin = 0;
+    for (size_t i = 0; i < cands.size(); ++i) n_thin += thin[i] = thin_loop(cands[i], hes.size());
+    if (n_thin == cands.size()) std::fill(thin.begin(), thin.end(), 0);
     double ad = std::atan2(dir.y, dir.x);
     // Pass 0: tangents. A curved arc's tangent is its curve's at the curve's end, which may lie up
     // to kCluster from the vertex (loose_tangent): at a thin conic's hairpin the curve turns within
@@ -156,7 +207,9 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
     double nearest_off = HUGE_VAL;
     for (int pass = 0; pass < 3; ++pass) {
         if (pass == 2) ad = std::atan2(dir.y, dir.x);
-        for (int hin : cands) {
+        for (size_t i = 0; i < cands.size(); ++i) {
+            const int hin = cands[i];
+            if (thin[i]) continue;
             int hout = half_[hin].next;
             const int aout = past_connector(hout), aback = past_connector(hin ^ 1);
             const double margin = pass == 0 && (dir_loose || loose_tangent(aout) || loose_tangent(aback)) ? kTangentTie : 1e-12;
@@ -195,7 +248,10 @@ int DomainMesh::find_wedge(const std::vector<int>& hes, int face, int v, Vec2 di
     // "parallel_edge" 28995, the paper's order: a line crossing a conic boundary arc at 2.1e-3 rad
     // at a vertex where its chord was cut in two; the second half went into the other wedge, and
     // the strip between the line and T''s edge, where the old source is nearer, was lost.)
-    return nearest_off < kTangentTie ? nearest : cands[0];
+    if (nearest_off < kTangentTie) return nearest;
+    for (size_t i = 0; i < cands.size(); ++i)
+        if (!thin[i]) return cands[i];
+    return cands[0];
 }
 
 void DomainMesh::insert_path(int face, const std::vector<int>& hes, const std::vector<int>& verts, const std::vector<int>& es, bool closed_new) {
@@ -506,7 +562,7 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
     return out;
 }
 
-void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<SplitPiece>& out, double quad) {
+void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<SplitPiece>& out, double quad, double operands) {
     out.clear();
     double gs = g_in.scale();
     if (!(gs > 0)) { out.push_back({f, 0}); return; }
@@ -559,6 +615,17 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
             if (lo >= -kZero && hi > kZero) { out.push_back({f, 1}); return; }
             if (hi <= kZero && lo < -kZero) { out.push_back({f, -1}); return; }
         }
+        // A square to the rounding of the operands (4 ulps of their largest coefficient): g keeps
+        // its sign but on one line, the two quadratics' tie. Its rounding, far above kZero where the
+        // square's own coefficients are small (a source's edge nearly perpendicular to T', l1 1e-4
+        // of its corner's quadratic), made a parabola whose arms ran out 0.08 along the line and
+        // back, 1e-7 apart, and around a tip 0.002 outside T'; its chord joined two vertices across
+        // T' the long way (generate_pairs17.py "terrain_far" 4375, side A, target 7: a terrain's
+        // edge region against its corner's, then a line of the next source crossing that hairpin
+        // three times within 2.6e-7 cut nothing, and a corner region kept an edge region's place,
+        // d^2 up to 0.02 high).
+        if (operands > 0 && !g.is_linear())
+            if (const int sign = double_line_sign(g, b, l2_rounding, 4 * 0x1p-52 * operands / gs)) { out.push_back({f, sign}); return; }
     }
     if (!g_in.is_linear() && split_by_line_pair(f, g, l2_rounding, out)) return;
     SplitCall s(f, g, g_in.is_linear(), tmp_);
