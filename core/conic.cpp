@@ -493,12 +493,9 @@ void decompose_conic(const Quadratic2& q0, ConicDecomposition& out, double l2_ro
 
     // Eigen-decomposition of the quadratic part [[a b][b c]]; none for a linear q (a region
     // boundary, the most common case), whose eigenvalues are exactly 0.
-    const bool linear = q.is_linear();
-    double theta = linear ? 0.0 : 0.5 * std::atan2(2 * q.b, q.a - q.c);
-    Vec2 e1 = linear ? Vec2{1, 0} : Vec2{std::cos(theta), std::sin(theta)}, e2{-e1.y, e1.x};
-    auto quad = [&](Vec2 e) { return q.a * e.x * e.x + 2 * q.b * e.x * e.y + q.c * e.y * e.y; };
-    double l1 = linear ? 0.0 : quad(e1), l2 = linear ? 0.0 : quad(e2);
-    if (std::fabs(l2) > std::fabs(l1)) { std::swap(l1, l2); std::swap(e1, e2); }
+    double l1 = 0, l2 = 0;
+    Vec2 e1{1, 0}, e2{-0.0, 1};
+    if (!q.is_linear()) q.principal_axes(l1, l2, e1, e2);
     Vec2 B{q.d, q.e};
 
     // Linear: 2 B.x + f = 0, also where the quadratic part moves the line by less than 1e-10 over

@@ -59,6 +59,14 @@ struct Quadratic2 {
     }
     bool is_linear() const { return a == 0 && b == 0 && c == 0; }
     double quad_scale() const { return std::max({std::fabs(a), std::fabs(b), std::fabs(c)}); }  // of the quadratic part
+    // The quadratic part's eigenvalues, the larger in magnitude as l1, and their unit eigenvectors.
+    void principal_axes(double& l1, double& l2, Vec2& e1, Vec2& e2) const {
+        const double theta = 0.5 * std::atan2(2 * b, a - c);
+        e1 = {std::cos(theta), std::sin(theta)}, e2 = {-e1.y, e1.x};
+        auto quad = [&](Vec2 v) { return a * v.x * v.x + 2 * b * v.x * v.y + c * v.y * v.y; };
+        l1 = quad(e1), l2 = quad(e2);
+        if (std::fabs(l2) > std::fabs(l1)) std::swap(l1, l2), std::swap(e1, e2);
+    }
     std::string to_string() const;
 };
 

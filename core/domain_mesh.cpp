@@ -290,17 +290,21 @@ std::vector<Vec2> DomainMesh::sample_loop(int start, int per_arc) const {
     return out;
 }
 
+// Half-edge h's share of the signed area of its loop, added to `area`: the trapezoid rule's term
+// of its chord, and for a curved arc the segment between the arc and its chord.
+void DomainMesh::add_half_edge_area(int h, double& area) const {
+    area += 0.5 * cross(vertices_[half_[h].origin].p, vertices_[target(h)].p);
+    if (!edges_[h >> 1].curve.straight()) {
+        const double seg = arc_geometry(h >> 1).segment;
+        area += (h & 1) ? -seg : seg;
+    }
+}
+
 double DomainMesh::loop_area(int start) const {
     double area = 0;
     int h = start;
     do {
-        const Edge& E = edges_[h >> 1];
-        Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
-        area += 0.5 * cross(a, b);
-        if (!E.curve.straight()) {
-            const double seg = arc_geometry(h >> 1).segment;  // between the arc and its chord
-            area += (h & 1) ? -seg : seg;
-        }
+        add_half_edge_area(h, area);
         h = half_[h].next;
     } while (h != start);
     return area;
@@ -579,12 +583,13 @@ void DomainMesh::update_maxima(std::vector<Candidate>& out) {
 
 // ---------------------------------------------------------------- invariants
 
-// How far the quadratics of faces F and G may differ at p on an arc between them (validate).
-double DomainMesh::jump_allowance(int F, int G, Vec2 p) const {
+// How far the quadratics of faces F and G may differ at p, where their boundary lies up to `pos`
+// off (to first order in their gradients, and `pos_sq` beyond), and by their rounding and the tie
+// rule's slack (validate; on an arc between them, pos = max(kOffCurve, delta_), pos_sq = pos^2).
+double DomainMesh::jump_allowance(int F, int G, Vec2 p, double pos, double pos_sq) const {
     const Quadratic2 &qF = faces_[F].poly, &qG = faces_[G].poly;
-    const double pos = std::max(kOffCurve, delta_);
     const double rounding = rounding_allowance(std::max(qF.scale(), qG.scale()), delta_);
-    return pos * (norm(qF.gradient(p)) + norm(qG.gradient(p))) + pos * pos + rounding + 1e-13 * (qF.scale() + qG.scale()) +
+    return pos * (norm(qF.gradient(p)) + norm(qG.gradient(p))) + pos_sq + rounding + 1e-13 * (qF.scale() + qG.scale()) +
            faces_[F].tie_slack + faces_[G].tie_slack;
 }
 
@@ -601,18 +606,17 @@ double DomainMesh::jump_allowance(int F, int G, Vec2 p) const {
 // with kCluster here rather than 1e-8, its step would have passed.)
 bool DomainMesh::sliver_beside_arc(int F, int G, int e, Vec2 m) const {
     constexpr double kUnresolvedSliver = 1e-8;
+    const double pos = std::max(kOffCurve, delta_);
     for (int pass = 0; pass < 2; ++pass) {
         const int X = pass == 0 ? F : G, Y = pass == 0 ? G : F;
-        const Quadratic2& qX = faces_[X].poly;
         bool explained = false;
         for_each_half_edge(X, [&](int h) {
             if (explained || (h >> 1) == e || !near_arc(h, m, kUnresolvedSliver)) return;
             const int H = half_[h ^ 1].face;
             if (H <= 0 || H == X || faces_[H].infinite) return;
-            const Quadratic2& qH = faces_[H].poly;
-            const double across = kUnresolvedSliver * (norm(qX.gradient(m)) + norm(qH.gradient(m))) + 1e-13 * (qX.scale() + qH.scale()) +
-                                  rounding_allowance(std::max(qX.scale(), qH.scale()), delta_) + faces_[X].tie_slack + faces_[H].tie_slack;
-            explained = std::fabs(qX(m) - qH(m)) <= across && (H == Y || std::fabs(qH(m) - faces_[Y].poly(m)) <= jump_allowance(H, Y, m));
+            const double qH = faces_[H].poly(m);
+            explained = std::fabs(faces_[X].poly(m) - qH) <= jump_allowance(X, H, m, kUnresolvedSliver, 0) &&
+                        (H == Y || std::fabs(qH - faces_[Y].poly(m)) <= jump_allowance(H, Y, m, pos, pos * pos));
         });
         if (explained) return true;
     }
@@ -681,7 +685,8 @@ std::string DomainMesh::validate(double area_tol) const {
         // shared region line, where d^2 is 0.41 and has no gradient.
         const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
         const double jump = std::fabs(qF(m) - qG(m));
-        const double tol = jump_allowance(F, G, m);
+        const double pos = std::max(kOffCurve, delta_);
+        const double tol = jump_allowance(F, G, m, pos, pos * pos);
         // Nor where another arc of F or G passes within kTinyChord of m: there one of them is a
         // sliver thinner than a chord the splits insert (find_chords), which stays on the side of
         // the rest of its face, whatever its polynomial (as a face that thin as a whole,

@@ -126,6 +126,7 @@ public:
     int num_live_vertices() const;
     double face_area(int f) const;
     double loop_area(int h) const;
+    void add_half_edge_area(int h, double& area) const;
     bool point_in_face(int f, Vec2 p) const;
     bool interior_point(int f, Vec2& out) const;     // some point strictly inside face f
     // p within tol of face f's boundary (but for edge `except`, if given)
@@ -269,7 +270,7 @@ private:
     template <class Fn> void for_each_in_loop(int start, Fn&& fn) const;  // one loop, from `start`
     void collect_half_edges(int f, std::vector<int>& out) const;
     bool near_arc(int h, Vec2 p, double tol) const;  // p within tol of half-edge h's arc
-    double jump_allowance(int F, int G, Vec2 p) const;
+    double jump_allowance(int F, int G, Vec2 p, double pos, double pos_sq) const;
     bool sliver_beside_arc(int F, int G, int e, Vec2 m) const;
 
     // The clipping primitive (domain_split.cpp): split_face_into runs these steps on one SplitCall.

@@ -55,11 +55,9 @@ Quadratic2 tangent_line(const Quadratic2& g, Vec2 p) {
 // an edge's and a plane's holding that edge: a square, where rounding leaves a parabola or two
 // parallel lines as thin as r allows (split_face_into).
 int double_line_sign(const Quadratic2& g, const Box2& b, double l2_rounding, double r) {
-    const double theta = 0.5 * std::atan2(2 * g.b, g.a - g.c);
-    Vec2 e1{std::cos(theta), std::sin(theta)}, e2{-e1.y, e1.x};
-    auto quad = [&](Vec2 e) { return g.a * e.x * e.x + 2 * g.b * e.x * e.y + g.c * e.y * e.y; };
-    double l1 = quad(e1), l2 = quad(e2);
-    if (std::fabs(l2) > std::fabs(l1)) std::swap(l1, l2), std::swap(e1, e2);
+    double l1, l2;
+    Vec2 e1, e2;
+    g.principal_axes(l1, l2, e1, e2);
     if (!(std::fabs(l1) > 0) || !(std::fabs(l2) <= std::max(1e-14, l2_rounding))) return 0;
     const double b1 = g.d * e1.x + g.e * e1.y, b2 = g.d * e2.x + g.e * e2.y, k = g.f - b1 * b1 / l1;
     double ymax = 0;  // g = l1 (X + b1 / l1)^2 + l2 Y^2 + 2 b2 Y + k
@@ -162,13 +160,8 @@ bool DomainMesh::thin_loop(int h0, size_t guard) const {
     size_t n = 0;
     do {
         if (h < 0 || !edges_[h >> 1].alive || ++n > guard) return false;
-        const Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
-        area += 0.5 * cross(a, b);
-        length += norm(b - a);
-        if (!edges_[h >> 1].curve.straight()) {
-            const double seg = arc_geometry(h >> 1).segment;
-            area += (h & 1) ? -seg : seg;
-        }
+        add_half_edge_area(h, area);
+        length += norm(vertices_[target(h)].p - vertices_[half_[h].origin].p);
         h = half_[h].next;
     } while (h != h0);
     return std::fabs(area) <= 0.5 * kCluster * length;
@@ -1472,15 +1465,10 @@ double DomainMesh::path_area(int from, int to, Box2& box) const {
     const Vec2 start = vertices_[half_[from].origin].p;
     int h = from, guard = 0;
     for (;;) {
-        const Edge& E = edges_[h >> 1];
         const Vec2 a = vertices_[half_[h].origin].p, b = vertices_[target(h)].p;
-        area += 0.5 * cross(a, b);
+        add_half_edge_area(h, area);
         box.add(a);
-        if (!E.curve.straight()) {
-            const double seg = arc_geometry(h >> 1).segment;
-            area += (h & 1) ? -seg : seg;
-            box.add(he_point(h, 0.5));
-        }
+        if (!edges_[h >> 1].curve.straight()) box.add(he_point(h, 0.5));
         if (target(h) == to || ++guard > 1000000) return area + 0.5 * cross(b, start);
         h = half_[h].next;
     }

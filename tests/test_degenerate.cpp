@@ -3923,6 +3923,30 @@ TEST(Degenerate, SliverEndThinnerThanATinyChordMayHoldTheNeighboursPolynomial) {
     EXPECT_GT(lattice_misses, 0);
 }
 
+// T' (T's one triangle) and S's triangles, in order, into a bare domain mesh, unwatched and
+// watched (the paper's insertion, every cut reported: the debugger's): validate() and
+// after_each(mesh, frame, s, label) after the insertion of source s, then check(mesh, frame,
+// label) on the result.
+template <class Check, class AfterEach>
+void insert_into_bare_mesh(const TriangleMesh& T, const TriangleMesh& S, Check check, AfterEach after_each) {
+    const TargetFrame fr = TargetFrame::make(T.corners(0));
+    for (bool watched : {false, true}) {
+        DomainMesh mesh(fr.ccw_corners());
+        DomainMesh::Listener watch;
+        const char* label = watched ? "watched" : "unwatched";
+        for (uint32_t s = 0; s < S.num_triangles(); ++s) {
+            mesh.insert(project_source(fr, S.corners(s), s), {}, watched ? &watch : nullptr);
+            EXPECT_EQ(mesh.validate(), "") << "after source " << s << ", " << label;
+            after_each(mesh, fr, s, label);
+        }
+        check(mesh, fr, label);
+    }
+}
+template <class Check>
+void insert_into_bare_mesh(const TriangleMesh& T, const TriangleMesh& S, Check check) {
+    insert_into_bare_mesh(T, S, check, [](const DomainMesh&, const TargetFrame&, uint32_t, const char*) {});
+}
+
 // A curved chord within kCluster of the face's boundary, but the boundary certainly on one side of
 // it all along (every arc farther from the curve than the rounding allows, the farthest a quarter
 // of kCluster): a real sliver, cut off, not dropped as hugging the boundary
@@ -3974,46 +3998,23 @@ TEST(Degenerate, CurvedChordBesideTheBoundaryCutsOffARealSliver) {
                                       {0.79730208286808124, 0.74953467202083501, -0.73829862877917918},
                                       {0.87685373419510215, 0.89965433453077215, -1.0726048083497142}},
                                      {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 13, 14}, {15, 16, 17}, {18, 19, 20}, {21, 22, 23}, {24, 25, 26}, {27, 28, 29}, {30, 31, 32}});  // in the order inserted
-    const TargetFrame fr = TargetFrame::make(T.corners(0));
-    for (bool watched : {false, true}) {
-        DomainMesh mesh(fr.ccw_corners());
-        DomainMesh::Listener watch;  // the paper's insertion, every cut reported: the debugger's
-        for (uint32_t s = 0; s < S.num_triangles(); ++s) {
-            mesh.insert(project_source(fr, S.corners(s), s), {}, watched ? &watch : nullptr);
-            EXPECT_EQ(mesh.validate(), "") << "after source " << s << (watched ? ", watched" : "");
-            if (s < 9) continue;  // the sliver is there from the 10th insertion
-            int in = 0, off = 0;
-            for (int i = -100; i <= 100; ++i)
-                for (int j = -100; j <= 100; ++j) {
-                    const Vec2 p{0.452015 + 1e-8 * i, 0.205373 + 1e-8 * j};  // the sliver's arc runs through it
-                    double poly, d2;
-                    if (!polynomial_and_d2(mesh, fr, S, p, poly, d2)) continue;
-                    ++in;
-                    off += std::abs(poly - d2) > 1e-11;
-                }
-            EXPECT_GT(in, 30000);
-            EXPECT_EQ(off, 0) << "after source " << s << (watched ? ", watched" : "");
-        }
-        EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-9), 0);
-    }
-}
-
-// T' (T's one triangle) and S's triangles, in order, into a bare domain mesh, unwatched and
-// watched (the paper's insertion, every cut reported: the debugger's): validate() after each
-// insertion, then check(mesh, frame, label) on the result.
-template <class Check>
-void insert_into_bare_mesh(const TriangleMesh& T, const TriangleMesh& S, Check check) {
-    const TargetFrame fr = TargetFrame::make(T.corners(0));
-    for (bool watched : {false, true}) {
-        DomainMesh mesh(fr.ccw_corners());
-        DomainMesh::Listener watch;
-        const char* label = watched ? "watched" : "unwatched";
-        for (uint32_t s = 0; s < S.num_triangles(); ++s) {
-            mesh.insert(project_source(fr, S.corners(s), s), {}, watched ? &watch : nullptr);
-            EXPECT_EQ(mesh.validate(), "") << "after source " << s << ", " << label;
-        }
-        check(mesh, fr, label);
-    }
+    auto sliver_window = [&](const DomainMesh& mesh, const TargetFrame& fr, uint32_t s, const char* label) {
+        if (s < 9) return;  // the sliver is there from the 10th insertion
+        int in = 0, off = 0;
+        for (int i = -100; i <= 100; ++i)
+            for (int j = -100; j <= 100; ++j) {
+                const Vec2 p{0.452015 + 1e-8 * i, 0.205373 + 1e-8 * j};  // the sliver's arc runs through it
+                double poly, d2;
+                if (!polynomial_and_d2(mesh, fr, S, p, poly, d2)) continue;
+                ++in;
+                off += std::abs(poly - d2) > 1e-11;
+            }
+        EXPECT_GT(in, 30000);
+        EXPECT_EQ(off, 0) << "after source " << s << ", " << label;
+    };
+    insert_into_bare_mesh(
+        T, S, [&](const DomainMesh& mesh, const TargetFrame& fr, const char* label) { EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-9), 0) << label; },
+        sliver_window);
 }
 
 // A lens 2.5e-8 wide (a conic arc and a short bridge edge) touching a face's outer loop at a
