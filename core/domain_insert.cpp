@@ -7,6 +7,7 @@
 #include "domain_mesh.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <optional>
@@ -250,26 +251,57 @@ bool DomainMesh::nearly_straight(int e) const {
     return chord > 0 && 1.5 * std::fabs(arc_geometry(e).segment) <= 0.1 * kVertexTolerance * chord;
 }
 
-// The folded needle of face f at the origin v of half-edge h, between its previous arc (from u)
-// and h (to w), if there is one: unfolded (unfold_needles). True if it was.
+// An arc no longer than the needle width: the blunt tip of a needle whose two straight sides end
+// on a curve that crosses both within the resolution.
+bool DomainMesh::tiny_arc(int h) const {
+    const Vec2 p = vertices_[half_[h].origin].p;
+    return norm(vertices_[target(h)].p - p) <= kVertexTolerance && norm(he_point(h, 0.5) - p) <= kVertexTolerance;
+}
+
+// The folded needle of face f ending with half-edge h (to w), if there is one: unfolded
+// (unfold_needles). True if it was. Its tip is h's origin v, or a tiny arc from v1 to v before h
+// (generate_pairs16.py "fillet_strip" 4121, the debugger's order, B's target 22: two region lines
+// through a source corner, 6e-4 rad apart, ran 2.8e-6 down to a conic that crossed both 3.7e-9
+// apart; the face between them was folded there and met its neighbours with a step of 1.5e-11,
+// 2% of d^2).
 bool DomainMesh::unfold_at(int f, int h) {
-    int a = half_[h].prev, b = h;
+    int b = h, tip = tiny_arc(half_[h].prev) ? half_[h].prev : -1, a = half_[tip >= 0 ? tip : b].prev;
     if (!nearly_straight(a >> 1) || !nearly_straight(b >> 1) || (a >> 1) == (b >> 1) || half_[b].next == a ||
+        (tip >= 0 && ((tip >> 1) == (a >> 1) || (tip >> 1) == (b >> 1))) ||
         half_[a].origin == target(b))  // both arcs between the same two vertices: no base to cut
         return false;
     const ArcKind kind = edges_[a >> 1].kind;  // the chord across the base is of that kind
-    const Vec2 pv = vertices_[half_[b].origin].p, pu = vertices_[half_[a].origin].p, pw = vertices_[target(b)].p;
-    const Vec2 du = pu - pv, dw = pw - pv;
+    const Vec2 pu = vertices_[half_[a].origin].p, p1 = vertices_[target(a)].p, p2 = vertices_[half_[b].origin].p,
+               pw = vertices_[target(b)].p;
+    const Vec2 du = pu - p1, dw = pw - p2;
     const double lu = norm(du), lw = norm(dw);
     if (!(lu > 0 && lw > 0) || dot(du, dw) <= 0) return false;
-    // The face lies left of h: turning from dw clockwise to du, its angle at v is nearly a full
-    // turn, the needle between the arcs outside it.
-    const double cr = cross(dw, du), length = std::min(lu, lw), width = -cr / std::max(lu, lw);
-    if (!(cr < 0 && width <= kVertexTolerance && length >= 8 * kVertexTolerance)) return false;
+    // The face lies left of its arcs: where the needle between a and b lies outside it, the cycle
+    // u, v1, v, w turns clockwise (a vertex tip: its angle at v is nearly a full turn).
+    const double twice_area = cross(p1 - pu, p2 - pu) + cross(p2 - pu, pw - pu);
+    const double length = std::min(lu, lw), width = -twice_area / std::max(lu, lw);
+    if (!(twice_area < 0 && width <= kVertexTolerance && length >= 8 * kVertexTolerance)) return false;
+    // A side may be T''s edge (B or A is 0, outside T'): the needle lies outside T' then, and the
+    // face beside it inside gives it up (target 33 of 4121: a region line 3.6e-9 outside T''s edge).
     const int A = half_[a ^ 1].face, B = half_[b ^ 1].face;
-    if (A <= 0 || B <= 0 || A == f || B == f || !faces_[A].alive || !faces_[B].alive) return false;
-    // One neighbour on both sides: it takes the needle whole, so v must be the needle's alone.
-    if (A == B && half_[b ^ 1].next != (a ^ 1)) return false;
+    if (A < 0 || B < 0 || A + B == 0 || A == f || B == f || !faces_[A].alive || !faces_[B].alive) return false;
+    const Vec2 axis = (du / lu + dw / lw) / norm(du / lu + dw / lw), mid = 0.5 * (p1 + p2) + axis * (0.5 * length);
+    auto q = [&](int F) { return F == 0 || faces_[F].infinite ? HUGE_VAL : faces_[F].poly(mid); };
+    // The neighbour that gives the needle up (the one whose quadratic is higher at its middle; one
+    // neighbour all round: that one): its twins of the needle's arcs must be one run of its loop.
+    const int loser = A == B ? A : A == 0 ? B : B == 0 ? A : q(A) <= q(B) ? B : A;
+    std::array<int, 4> cycle{};  // f's arcs of the needle, then the chord's half in the loser
+    int n = 0;
+    cycle[n++] = a;
+    if (tip >= 0) cycle[n++] = tip;
+    cycle[n++] = b;
+    cycle[n++] = -1;
+    int first = -1, last = -1;
+    for (int i = 0; i + 1 < n; ++i)
+        if (half_[cycle[i] ^ 1].face == loser) last = i, first = first < 0 ? i : first;
+    if (first < 0 || half_[cycle[last] ^ 1].prev == (cycle[first] ^ 1)) return false;  // its loop is more than the run
+    for (int i = first; i < last; ++i)
+        if (half_[cycle[i] ^ 1].face != loser || half_[cycle[i + 1] ^ 1].next != (cycle[i] ^ 1)) return false;
     // The longer arc split at the foot of the shorter one's end, unless that is its own end. A
     // foot past the longer arc's end, where the two ends lie within kVertexTolerance of each
     // other, is that end: the arc's line runs by its vertex within kOffCurve, so the foot of a
@@ -283,50 +315,54 @@ bool DomainMesh::unfold_at(int f, int h) {
         const Vec2 end = lu < lw ? pu : pw;  // the shorter arc's end, whose foot splits the longer
         const double z = straight_foot(e, end);
         if (z > edges_[e].z0 && z < edges_[e].z1) {
-            split_edge(e, z);
-            if (lu < lw) b = half_[a].next; else a = half_[b].prev;  // the arcs at v, the longer one cut
+            split_edge(e, z);  // the arcs at the tip: the longer one cut, the piece there kept
+            if (lu < lw) b = cycle[n - 2] = half_[cycle[n - 3]].next;
+            else a = cycle[0] = half_[cycle[1]].prev;
         } else if (!(norm(end - (lu < lw ? pw : pu)) <= kVertexTolerance)) {
             return false;
         }
     }
-    const int x = half_[a].origin, y = target(b), ta = a ^ 1, tb = b ^ 1;
+    cut_needle_base(f, cycle, n, first, last, loser, kind);
+    touch_face(f);
+    for (int F : {A, B})
+        if (F > 0) touch_face(F);
+    ++stats_.unfolds;
+    return true;
+}
+
+// Face f's needle, its arcs cycle[0..n-2] (f's halves, in its loop), unfolded: f takes the chord
+// x -> y across the base; the loser's run of their twins, from the twin of cycle[last] to that of
+// cycle[first], becomes the rest of the cycle that the chord's other half y -> x closes:
+// cycle[last + 1], ..., c1, cycle[0], ..., cycle[first - 1]. The run's arcs go, and the vertices
+// inside it.
+void DomainMesh::cut_needle_base(int f, std::array<int, 4>& cycle, int n, int first, int last, int loser, ArcKind kind) {
+    const int a = cycle[0], b = cycle[n - 2], x = half_[a].origin, y = target(b);
     const Vec2 px = vertices_[x].p, py = vertices_[y].p;
-    const Vec2 axis = (du / lu + dw / lw) / norm(du / lu + dw / lw), mid = pv + axis * (0.5 * length);
-    const double qa = faces_[A].infinite ? HUGE_VAL : faces_[A].poly(mid), qb = faces_[B].infinite ? HUGE_VAL : faces_[B].poly(mid);
     const int c = add_edge(segment_curve(px, py), 0, 1, line_through(px, py), kind, CurveKind::Line);
-    const int c0 = 2 * c, c1 = 2 * c + 1;  // x -> y in f; y -> x in the neighbour that loses the needle
-    auto link = [&](int p, int n) { half_[p].next = n; half_[n].prev = p; };
+    const int c0 = 2 * c, c1 = 2 * c + 1;  // x -> y in f; y -> x in the loser
+    cycle[n - 1] = c1;
+    auto link = [&](int p, int q) { half_[p].next = q; half_[q].prev = p; };
     half_[c0].origin = x, half_[c1].origin = y;
     half_[c0].face = f;
     link(half_[a].prev, c0), link(c0, half_[b].next);
     for (int& l : faces_[f].loops)
-        if (l == a || l == b) l = c0;
-    int gone;
-    if (A == B) {  // A's loop runs y -> x in place of y -> v -> x; both arcs and v go
-        half_[c1].face = A;
-        link(half_[tb].prev, c1), link(c1, half_[ta].next);
-        for (int& l : faces_[A].loops)
-            if (l == ta || l == tb) l = c1;
-        drop_edge(a >> 1);
-        vertices_[half_[b].origin].alive = false;
-        gone = b >> 1;
-    } else if (qa <= qb) {  // A keeps the needle: B's loop runs y -> x -> v in place of y -> v
-        half_[c1].face = B, half_[a].face = B;
-        link(half_[tb].prev, c1), link(c1, a), link(a, half_[tb].next);
-        for (int& l : faces_[B].loops)
-            if (l == tb) l = c1;
-        gone = b >> 1;
-    } else {         // B keeps it: A's loop runs v -> y -> x in place of v -> x
-        half_[c1].face = A, half_[b].face = A;
-        link(half_[ta].prev, b), link(b, c1), link(c1, half_[ta].next);
-        for (int& l : faces_[A].loops)
-            if (l == ta) l = b;
-        gone = a >> 1;
+        for (int i = 0; i + 1 < n; ++i)
+            if (l == cycle[i]) l = c0;
+    const int before = half_[cycle[last] ^ 1].prev, after = half_[cycle[first] ^ 1].next;
+    int p = before;
+    for (int k = 1; k < n - (last - first); ++k) {
+        const int q = cycle[(last + k) % n];
+        half_[q].face = loser;
+        link(p, q), p = q;
     }
-    drop_edge(gone);
-    touch_face(f), touch_face(A), touch_face(B);
-    ++stats_.unfolds;
-    return true;
+    link(p, after);
+    for (int& l : faces_[loser].loops)
+        for (int i = first; i <= last; ++i)
+            if (l == (cycle[i] ^ 1)) l = cycle[(last + 1) % n];
+    for (int i = first; i <= last; ++i) {
+        if (i < last) vertices_[target(cycle[i])].alive = false;
+        drop_edge(cycle[i] >> 1);
+    }
 }
 
 // The debugger's view of a split: the pieces' ids (built only when someone listens).

@@ -14,6 +14,7 @@
 // test of where a source can be nearer, which spares the insertion most cuts, in domain_reach.cpp.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -356,6 +357,8 @@ private:
     void give_to_region(int P, const SourceProjection& src, const SourceRegion& reg, const Listener* L);
     bool unfold_needles(uint64_t since);
     bool unfold_at(int f, int h);
+    bool tiny_arc(int h) const;
+    void cut_needle_base(int f, std::array<int, 4>& cycle, int n, int first, int last, int loser, ArcKind kind);
     bool nearly_straight(int e) const;
     bool straight_face_range(int f, const Quadratic2& g, const Box2& b, double& lo, double& hi) const;
     void report_split(const Listener* L, int parent, const std::vector<SplitPiece>& pieces, const Quadratic2& curve);
