@@ -286,7 +286,7 @@ bool DomainMesh::unfold_at(int f, int h) {
     const int A = half_[a ^ 1].face, B = half_[b ^ 1].face;
     if (A < 0 || B < 0 || A + B == 0 || A == f || B == f || !faces_[A].alive || !faces_[B].alive) return false;
     const Vec2 axis = (du / lu + dw / lw) / norm(du / lu + dw / lw), mid = 0.5 * (p1 + p2) + axis * (0.5 * length);
-    auto q = [&](int F) { return F == 0 || faces_[F].infinite ? HUGE_VAL : faces_[F].poly(mid); };
+    auto q = [&](int F) { return faces_[F].infinite ? HUGE_VAL : faces_[F].poly(mid); };  // F > 0 here
     // The neighbour that gives the needle up (the one whose quadratic is higher at its middle; one
     // neighbour all round: that one): its twins of the needle's arcs must be one run of its loop.
     const int loser = A == B ? A : A == 0 ? B : B == 0 ? A : q(A) <= q(B) ? B : A;
@@ -299,7 +299,8 @@ bool DomainMesh::unfold_at(int f, int h) {
     int first = -1, last = -1;
     for (int i = 0; i + 1 < n; ++i)
         if (half_[cycle[i] ^ 1].face == loser) last = i, first = first < 0 ? i : first;
-    if (first < 0 || half_[cycle[last] ^ 1].prev == (cycle[first] ^ 1)) return false;  // its loop is more than the run
+    assert(first >= 0);  // the loser is a's or b's neighbour
+    if (half_[cycle[last] ^ 1].prev == (cycle[first] ^ 1)) return false;  // its loop is more than the run
     for (int i = first; i < last; ++i)
         if (half_[cycle[i] ^ 1].face != loser || half_[cycle[i + 1] ^ 1].next != (cycle[i] ^ 1)) return false;
     // The longer arc split at the foot of the shorter one's end, unless that is its own end. A
