@@ -447,12 +447,17 @@ SurfaceStats surface_stats(const VoxelGrid& grid, int side, const StatsOptions& 
     const std::vector<double> A = level_areas(pass, levels);
     if (opt.histogram_bins > 0) {
         out.histogram_edges = hist_edges;
-        for (int k = 0; k < opt.histogram_bins; ++k)
-            out.histogram_area.push_back(area_at(levels, A, hist_edges[k]) - area_at(levels, A, hist_edges[k + 1]));
+        // The area above each edge, made non-increasing: each level's area is summed on its own, so
+        // an empty bin came out as -1e-16 (a triangle whose d = 2 - x, bins of 0.5). The bins then
+        // telescope: they add up to the total area.
+        std::vector<double> above(hist_edges.size());
+        for (size_t k = 0; k < above.size(); ++k)
+            above[k] = std::min(k ? above[k - 1] : out.area, std::max(0.0, area_at(levels, A, hist_edges[k])));
+        for (int k = 0; k < opt.histogram_bins; ++k) out.histogram_area.push_back(above[k] - above[k + 1]);
         // What lies above the top edge (only when it is below the maximum) goes to the last bin.
-        out.histogram_area.back() += area_at(levels, A, hist_edges.back());
+        out.histogram_area.back() += above.back();
         // The first bin also holds the area where d = 0 exactly (touching or coincident surfaces).
-        out.histogram_area.front() += out.area - area_at(levels, A, 0.0);
+        out.histogram_area.front() += out.area - above.front();
     }
     if (opt.tolerance >= 0) {
         out.area_above = area_at(levels, A, opt.tolerance);

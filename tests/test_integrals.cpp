@@ -687,6 +687,41 @@ TEST(SurfaceStats, EveryPointNearestToOneVertex) {
     EXPECT_LT(rel(s.max, std::sqrt(4 + h * h)), 1e-12);  // at the corners, distance 2 from the centre
 }
 
+// Every point of A (the right triangle x, y >= 0, x + y <= 1 in z = 0) is nearest to one edge of B:
+// B's edge x = 2, z = 0 (y in [-10, 10]); B's plane falls away from A (x grows as z goes down), so
+// a point's foot on that plane has z > 0, beyond the edge, outside B: d = 2 - x. Then, by hand: the
+// mean of x is 1/3 and of x^2 is 1/6, so mean d = 5/3 and mean d^2 = 4 - 4/3 + 1/6 = 17/6; the
+// area where d <= u (u in [1, 2]) is that of x >= 2 - u, (u - 1)^2 / 2, so the p-th percentile is
+// 1 + sqrt(p / 100) and the area above t is s - s^2 / 2 with s = 2 - t.
+TEST(SurfaceStats, EveryPointNearestToOneEdge) {
+    const TriangleMesh A = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}});
+    const TriangleMesh B = mesh_of({{2, -10, 0}, {2, 10, 0}, {3, 0, -10}}, {{0, 1, 2}});
+    VoxelGrid grid(A, B);
+    StatsOptions o = one_thread();
+    o.tolerance = 1.5;
+    o.histogram_bins = 4;  // edges 0, 0.5, 1, 1.5, 2: the first two bins are empty
+    SurfaceStats s = surface_stats(grid, 0, o);
+    auto above = [](double t) { const double r = std::min(1.0, 2 - t); return t >= 2 ? 0.0 : r - r * r / 2; };
+    EXPECT_LT(rel(s.area, 0.5), 1e-12);
+    EXPECT_LT(rel(s.mean(), 5.0 / 3), 1e-9);
+    EXPECT_LT(rel(s.rms(), std::sqrt(17.0 / 6)), 1e-9);
+    EXPECT_LT(rel(s.max, 2), 1e-12);
+    EXPECT_LT(rel(s.area_above, above(1.5)), 1e-9);
+    ASSERT_EQ(s.percentiles.size(), 4u);
+    const double ps[4] = {50, 90, 95, 99};
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(s.percentiles[k], 1 + std::sqrt(ps[k] / 100), s.percentile_tolerance + 1e-12) << ps[k];
+    // The bins: no area is negative, not even by rounding (the empty bin [0.5, 1] was -1.1e-16),
+    // and they add up to the area.
+    ASSERT_EQ(s.histogram_area.size(), 4u);
+    double sum = 0;
+    for (int k = 0; k < 4; ++k) {
+        EXPECT_GE(s.histogram_area[k], 0.0) << k;
+        EXPECT_NEAR(s.histogram_area[k], above(0.5 * k) - above(0.5 * (k + 1)), 1e-12) << k;
+        sum += s.histogram_area[k];
+    }
+    EXPECT_NEAR(sum, s.area, 1e-15);
+}
+
 // ---------------------------------------------------------------- the area above a level
 
 // face_area_above (level_area.cpp, Green's theorem with the face left whole) against the
