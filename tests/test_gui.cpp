@@ -720,6 +720,41 @@ TEST(Gui, BuiltinCaseHasItsHandValue) {
     EXPECT_EQ(bad.code, 2);
 }
 
+// A target without a domain mesh says what it is and how it is measured, in the state JSON and in
+// the domain view. The sliver case's A is (0,0,0), (1,0,0), (0.5,eps,0): its longest edge is 1 and
+// its height over it eps (below 1e-7: a sliver); at eps = 0 it is a segment. shared_edge's T0 has a
+// domain mesh. The view's note runs over several lines (the old one-line note had none below its
+// first line).
+TEST(Gui, DegenerateTargetSaysWhatItIs) {
+    REQUIRE_XVFB();
+    fs::path dir = scratch_dir(), png = dir / "sliver.png";
+    Outcome o = run_gui({"--case", "sliver", "--epsilon", "1e-9", "--target", "0", "--step", "end"}, png, dir);
+    ASSERT_EQ(o.code, 0) << o.err;
+    const size_t at = o.out.find("\"degenerate_target\": {\"kind\": \"sliver\"");
+    ASSERT_NE(at, std::string::npos) << o.out;
+    EXPECT_NEAR(num(o.out, "height", at), 1e-9, 1e-18);
+    EXPECT_NEAR(num(o.out, "longest_edge", at), 1, 1e-15);
+    const std::vector<int> r = int_list(o.out, "domain_view");
+    ASSERT_EQ(r.size(), 4u);
+    const int em = (int)num(o.out, "font_size");
+    ASSERT_GT(em, 5);
+    Image im = load_png(png);
+    const int text = count(im, r[0], r[1] + 2 * em + em / 2, r[0] + r[2], r[1] + 6 * em,
+                           [](std::array<int, 3> p) { return near(p, {220, 220, 220}, 60); });
+    EXPECT_GT(text, 100) << "the note's further lines are missing";
+
+    Outcome z = run_gui({"--case", "sliver", "--epsilon", "0", "--target", "0", "--step", "end"}, png, dir);
+    ASSERT_EQ(z.code, 0) << z.err;
+    const size_t at2 = z.out.find("\"degenerate_target\": {\"kind\": \"segment\"");
+    ASSERT_NE(at2, std::string::npos) << z.out;
+    EXPECT_EQ(num(z.out, "height", at2), 0.0);
+    EXPECT_EQ(num(z.out, "longest_edge", at2), 1.0);
+
+    Outcome n = run_gui({"--case", "shared_edge", "--target", "0", "--step", "end"}, png, dir);
+    ASSERT_EQ(n.code, 0) << n.err;
+    EXPECT_EQ(raw_value(n.out, "degenerate_target"), "null") << n.out;
+}
+
 // --export-case DIR writes the selected target and its relevant sources; the pair alone has the
 // same one-sided distance as the target's maximum in the whole meshes.
 TEST(Gui, ExportCaseReproducesTheTargetMaximum) {

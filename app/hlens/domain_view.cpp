@@ -155,7 +155,24 @@ void draw_maximum_and_notes(const Stepper& st, const DomainMesh* mesh, ImDrawLis
         dl->AddLine(ImVec2(q.x, q.y - 12), ImVec2(q.x, q.y + 12), IM_COL32(255, 255, 255, 255), 1.5f);
     }
     const ImVec2 c0 = cv.c0;
-    if (!mesh) dl->AddText(ImVec2(c0.x + em(), c0.y + em()), IM_COL32(220, 220, 220, 255), "degenerate target: no domain mesh");
+    if (!mesh) {  // say what the target is and how it is measured instead
+        char note[400] = "degenerate target: no domain mesh";
+        if (const auto d = degenerate_target(st.solver->frame())) {
+            if (d->kind == std::string("point"))
+                std::snprintf(note, sizeof note, "degenerate target: its three corners coincide (a point). No domain "
+                              "mesh: its distance is the point's, exactly.");
+            else if (d->kind == std::string("segment"))
+                std::snprintf(note, sizeof note, "degenerate target: a segment %.6g long (zero area). No domain mesh: "
+                              "its maximum is taken on the segment, exactly.", d->longest_edge);
+            else
+                std::snprintf(note, sizeof note, "sliver target: its height, %.3g, is below 1e-7 of its longest edge, "
+                              "%.6g. No domain mesh: it is handled as its three edges, whose maximum is exact; the true "
+                              "maximum lies at most the height above it (the certified interval allows for it).",
+                              d->height, d->longest_edge);
+        }
+        dl->AddText(nullptr, 0, ImVec2(c0.x + em(), c0.y + em()), IM_COL32(220, 220, 220, 255), note, nullptr,
+                    cv.size.x - 2 * em());   // wrapped to the canvas
+    }
     if (mesh && st.inserting() >= 0) {
         char note[160];
         std::snprintf(note, sizeof note, "inside insertion %d (T %d): domains it has not reached keep their labels",

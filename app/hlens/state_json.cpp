@@ -101,6 +101,11 @@ std::string step_json(const Stepper& st) {
          ", \"highlighted\": " + std::to_string(st.inserted_sources().size()) +
          ", \"inserting\": " + std::to_string(st.inserting()) +
          ", \"radius_plot\": " + std::to_string(st.radius_plot.size()) + "}";
+    if (const auto d = degenerate_target(st.solver->frame()))
+        j += ", \"degenerate_target\": {\"kind\": \"" + std::string(d->kind) + "\", \"height\": " + json_number(d->height) +
+             ", \"longest_edge\": " + json_number(d->longest_edge) + "}";
+    else
+        j += ", \"degenerate_target\": null";
     j += ", \"playing\": " + std::string(st.playing ? "true" : "false");
     j += ", \"voxels\": {\"visited\": " + std::to_string(st.vox_visited) + ", \"pending\": " +
          std::to_string(st.vox_pending) + ", \"culled\": " + std::to_string(st.vox_culled) + "}";

@@ -365,4 +365,11 @@ void sync_stepper(AppState& s) {
     if (!st.active() || st.scene != s.scene || st.side != d || st.target != t) st.reset(s.scene, d, t);
 }
 
+std::optional<DegenerateTarget> degenerate_target(const TargetFrame& fr) {
+    if (!fr.degenerate) return std::nullopt;
+    if (fr.corners[0] == fr.corners[1] && fr.corners[1] == fr.corners[2]) return DegenerateTarget{"point", 0, 0};
+    const double h = TargetSolver::sliver_slack(fr);
+    return DegenerateTarget{h == 0 ? "segment" : "sliver", h, fr.scale};
+}
+
 }  // namespace hlens::gui

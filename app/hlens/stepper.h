@@ -50,6 +50,13 @@ struct StepSnapshot {
     int32_t inserting = -1;                   // the source being inserted, once its regions are projected
 };
 
+// A target without a domain mesh (TargetFrame::degenerate), for the domain view's note and the
+// state JSON: "point" (its corners coincide), "segment" (collinear corners) or "sliver" (a height
+// below 1e-7 of its longest edge: handled as its three edges, the true maximum at most `height`
+// above theirs). World units; nullopt for a target with a domain mesh.
+struct DegenerateTarget { const char* kind; double height, longest_edge; };
+std::optional<DegenerateTarget> degenerate_target(const TargetFrame& fr);
+
 struct Stepper {
     // What is being stepped.
     std::shared_ptr<const LoadedScene> scene;
