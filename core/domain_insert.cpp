@@ -178,9 +178,8 @@ void DomainMesh::apply_region(int P, const SourceProjection& src, const SourceRe
         note_tie(P, reg.poly);
         return;
     }
-    Quadratic2 Q = faces_[P].poly - reg.poly;                // > 0 where the source is nearer
     std::vector<SplitPiece>& pieces = tmp_.pieces;
-    split_face_into(P, Q, pieces, std::max(faces_[P].poly.quad_scale(), reg.poly.quad_scale()), std::max(faces_[P].poly.scale(), reg.poly.scale()));
+    const Quadratic2 Q = split_where_below(P, reg.poly, pieces);  // Q > 0 where the source is nearer
     report_split(L, P, pieces, Q);
     for (const SplitPiece& pc : pieces)
         if (pc.sign > 0) give_to_region(pc.face, src, reg, L);

@@ -594,7 +594,7 @@ double DomainMesh::jump_allowance(int F, int G, Vec2 p, double pos, double pos_s
 }
 
 // The arc e between F and G, at its middle m, has a sliver on one side, X (F or G), narrower than
-// the precision to which a split places a vertex on a curve (kOnCurve in domain_split.cpp, 1e-8):
+// the precision to which a split places a vertex on a curve (kOnCurve, 1e-8):
 // another arc of X, to a face H, passes that close. The construction cannot tell such a sliver's
 // side, and it may carry a polynomial off d^2 within its width times the gradients; d^2 is
 // continuous across it if X agrees with H to that, and H with the other side, Y, as across an arc
@@ -605,17 +605,16 @@ double DomainMesh::jump_allowance(int F, int G, Vec2 p, double pos, double pos_s
 // A sliver 5.9e-8 wide, generate_pairs15.py 2061, is resolved instead: real_sliver_beside_chord;
 // with kCluster here rather than 1e-8, its step would have passed.)
 bool DomainMesh::sliver_beside_arc(int F, int G, int e, Vec2 m) const {
-    constexpr double kUnresolvedSliver = 1e-8;
     const double pos = std::max(kOffCurve, delta_);
     for (int pass = 0; pass < 2; ++pass) {
         const int X = pass == 0 ? F : G, Y = pass == 0 ? G : F;
         bool explained = false;
         for_each_half_edge(X, [&](int h) {
-            if (explained || (h >> 1) == e || !near_arc(h, m, kUnresolvedSliver)) return;
+            if (explained || (h >> 1) == e || !near_arc(h, m, kOnCurve)) return;
             const int H = half_[h ^ 1].face;
             if (H <= 0 || H == X || faces_[H].infinite) return;
             const double qH = faces_[H].poly(m);
-            explained = std::fabs(faces_[X].poly(m) - qH) <= jump_allowance(X, H, m, kUnresolvedSliver, 0) &&
+            explained = std::fabs(faces_[X].poly(m) - qH) <= jump_allowance(X, H, m, kOnCurve, 0) &&
                         (H == Y || std::fabs(qH - faces_[Y].poly(m)) <= jump_allowance(H, Y, m, pos, pos * pos));
         });
         if (explained) return true;

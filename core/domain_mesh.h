@@ -262,6 +262,9 @@ private:
     // within 1e-7 of each other, a vertex on one of them ends a chord of another this far away
     // (domain_split.cpp, on_component; measured on the bunny pair: up to 8.4e-7).
     static constexpr double kOffCurve = 1e-6;
+    // A vertex this close to a curve is on it: the precision to which a split (domain_split.cpp)
+    // places a vertex on a curve.
+    static constexpr double kOnCurve = 1e-8;
     // Crossing points this close along a curve are one point: where several curves meet (the
     // shadow of a vertex shared by many sources), nearly double roots are only accurate to about
     // sqrt(epsilon). (The split's other tolerances are in domain_split.cpp.)
@@ -279,6 +282,9 @@ private:
     // `quad`: where g is a difference of two quadratics, the larger of their quadratic parts'
     // quad_scale(): g's part is exact only to an ulp of it.
     void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out, double quad = 0, double operands = 0);
+    // Face f split where q lies below its polynomial (g = poly - q > 0 there, with both operands'
+    // scales for the rounding); returns g.
+    Quadratic2 split_where_below(int f, const Quadratic2& q, std::vector<SplitPiece>& out);
     bool split_by_line_pair(int f, const Quadratic2& g, double l2_rounding, std::vector<SplitPiece>& out);
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);

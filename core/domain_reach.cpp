@@ -209,8 +209,7 @@ void DomainMesh::claim_sliver(int P, const SourceProjection& src, unsigned may_w
     const size_t k = deepest_region(src, x, may_win);
     if (k >= src.regions.size() || !in_region(src.regions[k], x, kCluster)) return;
     std::vector<SplitPiece> pieces;
-    split_face_into(P, faces_[P].poly - src.regions[k].poly, pieces, std::max(faces_[P].poly.quad_scale(), src.regions[k].poly.quad_scale()),
-                    std::max(faces_[P].poly.scale(), src.regions[k].poly.scale()));
+    split_where_below(P, src.regions[k].poly, pieces);
     for (const SplitPiece& pc : pieces)
         if (pc.sign > 0) claim_crack(pc.face, src, may_win);
 }
