@@ -496,7 +496,6 @@ struct DomainMesh::SplitCall {
     int centre = -1;          // a line pair's centre: the vertex on both lines (add_line_pair_centre)
     int pinches = 0;          // pairs of vertices made one where the face is pinched (pinch_face)
     double l2_rounding = 0;   // the rounding of g's smaller eigenvalue, for decompose_conic (0: unknown)
-    bool given = false;       // g is a curve as given (a region's line), not a difference of quadratics
 
     SplitCall(int face, const Quadratic2& g_unit, bool linear, DomainMesh::Scratch& scratch)
         : f(face), g(g_unit), g_linear(linear), tmp(scratch) {
@@ -629,7 +628,6 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
     }
     if (!g_in.is_linear() && split_by_line_pair(f, g, l2_rounding, out)) return;
     SplitCall s(f, g, g_in.is_linear(), tmp_);
-    s.given = !(operands > 0);
     s.l2_rounding = l2_rounding;
     split_boundary_where_g_changes_sign(s);  // 1.
     classify_by_side(s);                     // 2.
@@ -1651,27 +1649,14 @@ bool DomainMesh::thin_beyond_chord(int f, const Chord& c) const {
 // edge's domain stayed on the old curve, 8.5e-8 off the new one along 0.2 of T'. The third's chord
 // on the new curve was dropped as hugging the arc, and the sliver between kept the third's
 // quadratic, up to 2e-8 above d^2; a plane parallel to T' then took part of it and stepped d^2 by
-// 1.2e-8 at its arc.) A straight chord too, where it is a region's line (the curve as given, not a
-// difference of quadratics, whose sides may be rounding): generate_pairs9.py "perp_corner_tiny"
-// 6680, B's target 1, the paper's order, a source 3e-8 across standing on T': its edge region, a
-// strip 3.7e-8 wide, dropped its chord as hugging a sliver of it 1.8e-8 to 3.7e-8 wide and 7e-4
-// long that a cut by its corner region had left, and the sliver kept a source 3% farther in d^2.
-// Other straight chords are left to hugging and thin_beyond_chord.
+// 1.2e-8 at its arc.) Straight chords are left to hugging and thin_beyond_chord.
 bool DomainMesh::real_sliver_beside_chord(const SplitCall& s, const Chord& c) const {
     int ha, hb;
-    if ((c.comp.kind == CurveKind::Line && !s.given) || c.va < 0 || c.va == c.vb || !once_on_one_loop(s.f, c.va, c.vb, ha, hb)) return false;
+    if (c.comp.kind == CurveKind::Line || c.va < 0 || c.va == c.vb || !once_on_one_loop(s.f, c.va, c.vb, ha, hb)) return false;
     const double certain = certain_side(s);
     auto near = [&](Vec2 p) { return off_component(c.comp, p) <= kCluster; };
-    auto near2 = [&](Vec2 p) { return off_component(c.comp, p) <= 2 * kCluster; };
-    const std::pair<int, int> paths[2] = {{ha, c.vb}, {hb, c.va}};
-    for (int k = 0; k < 2; ++k) {
-        const auto [from, to] = paths[k];
+    for (auto [from, to] : {std::pair{ha, c.vb}, std::pair{hb, c.va}}) {
         if (!path_stays_near(from, to, near)) continue;
-        // A line only where the face is more than a sliver on its other side: in a strip thinner
-        // than that, every line along it hugs both sides (generate_pairs5.py "seam_strip" 11761,
-        // T' itself 1.06e-7 high: cut along a region line, it met a source's domain with a step
-        // of d^2 of 10%).
-        if (c.comp.kind == CurveKind::Line && path_stays_near(paths[1 - k].first, paths[1 - k].second, near2)) continue;
         double v, lo = HUGE_VAL, hi = -HUGE_VAL;  // over the marked arcs (none: lo > hi)
         for (int k = from; half_[k].origin != to; k = half_[k].next)
             if (s.side_of(k, v)) lo = std::min(lo, v), hi = std::max(hi, v);

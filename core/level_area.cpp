@@ -273,12 +273,6 @@ static double area_above(const DomainMesh& m, int f, double t2, const Box2& box,
     const double gtol = 1e-13 * g.scale() * (1 + size) * (1 + size) + 1e-12 * (std::fabs(r.hi) + t2);
     if (r.lo > t2) return face_area_exact(m, f).value;
     if (r.hi <= t2 + gtol) return 0;  // also d = t all over F, within rounding: nothing above
-    // Nor at or above the face's own maximum (a convex quadratic's is on the boundary, where
-    // update_maxima took it), however g decomposes: a sliver 0.83 long and 1e-7 wide beside T''s
-    // edge, whose d^2 (an edge parallel to T', 1.7e-7 from it) is of one variable across it, is
-    // a double line to decompose_conic at t^2 = 2.8e-14 against coefficients of 0.67, and was
-    // counted whole above its maximum (the degenerate seeds' 59, "tilted grids", B's target 11).
-    if (t2 >= face.max_value) return 0;
     const ConicDecomposition dec = decompose_conic(g);
     if (dec.components.empty()) {
         // g does not change sign: d = t on a line or a point at most (the least d over F, where
