@@ -329,7 +329,7 @@ private:
     int side_of_piece(SplitCall& s, int face, const std::vector<int>& loop_hes) const;
 
     // The insertion of a source (domain_insert.cpp): its regions clipped to T' once, then each face.
-    struct RegionBoxes { Box2 box[7]; bool empty[7]; };
+    struct RegionBoxes { Box2 box[7]; bool empty[7]; bool thin[7] = {}; };  // thin: clip_regions_to_target
     long relabels_ = 0;  // pieces given to a source, ever (insert: did anything change?)
     std::array<Vec2, 3> grown_;  // T' grown by kCluster, for the regions' boxes (grown_target)
     static std::array<Vec2, 3> grown_target(const std::array<Vec2, 3>& P);
@@ -337,6 +337,7 @@ private:
     static bool region_box_misses(const Box2& b, const RegionBoxes& boxes, size_t k);
     static bool region_box_inside(const Box2& b, const SourceRegion& reg);
     void insert_into_face(int F, const SourceProjection& src, const RegionBoxes& boxes, const Listener* L);
+    bool thin_region_reaches(int F, const SourceProjection& src, const RegionBoxes& boxes);
     // Without a listener (domain_reach.cpp): the regions that may be nearer on F, and the tests.
     void insert_where_nearer(int F, const SourceProjection& src, const RegionBoxes& boxes);
     bool region_nowhere_nearer(int F, const SourceRegion& reg, const Box2& rbox);

@@ -13,7 +13,8 @@
 // The result is the same function d^2 := min(d^2, d_T^2) on the same domains, with fewer spurious
 // vertices left on curved arcs (tests: Lean.*, which compare it with the paper's insertion). The
 // debugger, which shows every cut as an event, runs the paper's insertion (insert with a
-// Listener); everything else (paper and fast mode, statistics) runs this one.
+// Listener); everything else (paper and fast mode, statistics) runs this one, but on a face that a
+// region thinner than kCluster may reach (DomainMesh::thin_region_reaches).
 #include "domain_mesh.h"
 
 #include <algorithm>
