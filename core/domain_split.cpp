@@ -338,11 +338,19 @@ void DomainMesh::rebuild_faces(const std::vector<int>& hes, int reuse, std::vect
         // "overlap_retri" 3145, nearest first: a coplanar copy's domain wrapped around another's
         // wedge, pinched at T''s corner; the wedge's other side, with an area of -3.5e-7, became a
         // piece of its own).
+        // Of the arcs the hole shares with no loop of the face (their twins elsewhere), if it has
+        // any: on a shared arc the point lies on that other loop too, and its count there is
+        // rounding as well. (Generate_pairs9.py "pointlike_tiny_mesh" 8009, B's target 5, nearest
+        // first: a chord from a face's hole round the hole and back to it cut off a crescent; the
+        // rest of the hole, its longest arc a piece of the chord, counted as inside the crescent,
+        // which took it, and the face lost its hole: a face of area -1.1e-4.)
         int hp = cycles[hi];
         double longest = -1;
+        bool own = false;
         for_each_in_loop(cycles[hi], [&](int h) {
+            const bool o = tmp_.seen_mark[h ^ 1] != seen;
             const double len = norm2(vertices_[target(h)].p - vertices_[half_[h].origin].p);
-            if (len > longest) longest = len, hp = h;
+            if ((o && !own) || (o == own && len > longest)) longest = len, hp = h, own = o;
         });
         const Edge& E = edges_[hp >> 1];
         Vec2 p = E.curve(0.5 * (E.z0 + E.z1));

@@ -4217,3 +4217,64 @@ TEST(Degenerate, LeanInsertionDefersToThePaperWhereARegionIsThin) {
         T, S, [&](const DomainMesh& mesh, const TargetFrame& fr, const char* label) { EXPECT_EQ(grid_points_off_d2(mesh, fr, S, 200, 1e-9), 0) << label; },
         sliver_window);
 }
+
+// Points of T' lying in more than one domain, or in none, on an n x n barycentric grid, but for
+// those within `margin` of some domain's boundary: the domains tile T' (an oracle independent of
+// validate(): each face's own point-in-face test, its loops as they are).
+int grid_points_not_tiled(const DomainMesh& mesh, const TargetFrame& fr, int n, double margin) {
+    const auto& c = fr.corners;
+    int off = 0;
+    for (int i = 1; i < n; ++i)
+        for (int j = 1; i + j < n; ++j) {
+            const Vec2 p = c[0] + (c[1] - c[0]) * (double(i) / n) + (c[2] - c[0]) * (double(j) / n);
+            int in = 0;
+            bool near = false;
+            for (size_t f = 1; f < mesh.faces().size(); ++f) {
+                if (!mesh.faces()[f].alive) continue;
+                near = near || mesh.near_boundary((int)f, p, margin);
+                in += mesh.point_in_face((int)f, p);
+            }
+            off += !near && in != 1;
+        }
+    return off;
+}
+
+// A hole's test point on an arc it shares with another loop of the face being rebuilt lies on that
+// loop too (DomainMesh::rebuild_faces). A target a few ulps across (1e-14) among point-like sources
+// (generate_pairs9.py "pointlike_tiny_mesh" 8009, B's target 5, nearest first; reduced to 3 of A's
+// faces): the second source's domain is a lens, a hole of the first's; the third's chord, from the
+// hole round it and back, cut off a crescent, and the rest of the hole, whose longest arc was a piece
+// of that chord, went to the crescent: the first source's domain lost its hole, and the lens's two
+// pieces became a face turned inside out over another (validate(): "negative area -4.7122e-05"
+// without the change). Oracle: on a grid over T', every point away from the domains' boundaries
+// lies in exactly one domain (without the change, the points of the lens lie in three).
+TEST(Degenerate, HoleWhoseLongestArcIsAChordGoesToTheFaceAroundIt) {
+    const TriangleMesh T = make_mesh({{2.4112529333481203, -22.609394900390409, 8.1366046948539683},
+                                      {2.4112529333443651, -22.609394900389702, 8.136604694849666},
+                                      {2.411252933342102, -22.609394900391127, 8.1366046948507389}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{2.4112532427846465, -22.609393771878921, 8.1366053358725505},
+                                      {2.411252259836532, -22.609394266661035, 8.1366039149130369},
+                                      {2.4112531502939274, -22.609395504288205, 8.1366048664837844},
+                                      {2.4112529333446635, -22.609394900390768, 8.1366046948511226},
+                                      {2.4112529333446635, -22.609394900390768, 8.1366046948511226},
+                                      {2.411252933344664, -22.609394900390768, 8.1366046948511244},
+                                      {2.4112529333446635, -22.609394900390768, 8.1366046948511226},
+                                      {2.4112529333446622, -22.609394900390768, 8.1366046948511208},
+                                      {2.4112529333446626, -22.609394900390768, 8.1366046948511226}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});  // in the order inserted
+    int lens_points = 0;  // grid points in the second source's lens after its insertion (6e-4 of T')
+    insert_into_bare_mesh(
+        T, S, [&](const DomainMesh& mesh, const TargetFrame& fr, const char* label) { EXPECT_EQ(grid_points_not_tiled(mesh, fr, 500, 1e-9), 0) << label; },
+        [&](const DomainMesh& mesh, const TargetFrame& fr, uint32_t s, const char* label) {
+            EXPECT_EQ(grid_points_not_tiled(mesh, fr, 500, 1e-9), 0) << "after source " << s << ", " << label;
+            if (s != 1) return;
+            const auto& c = fr.corners;
+            for (int i = 1; i < 500; ++i)
+                for (int j = 1; i + j < 500; ++j) {
+                    const int f = mesh.face_at(c[0] + (c[1] - c[0]) * (i / 500.0) + (c[2] - c[0]) * (j / 500.0));
+                    lens_points += f > 0 && mesh.faces()[f].label.source == 1;
+                }
+        });
+    EXPECT_GT(lens_points, 20);  // the case is there (twice: unwatched and watched)
+}
