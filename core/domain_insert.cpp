@@ -130,9 +130,7 @@ void DomainMesh::clip_regions_to_target(const SourceProjection& src, RegionBoxes
         // Thin in itself (thin_region_reaches): its area clipped to T' grown three times about its
         // centre at most kCluster times its size there; not a region that meets T' along an edge
         // only (a neighbour of a coincident source), which is most of them on near-copies.
-        const Vec2 c = (grown_[0] + grown_[1] + grown_[2]) / 3.0;
-        P.clear();
-        for (Vec2 g : grown_) P.push_back(c + (g - c) * 3.0);
+        P.assign(tripled_.begin(), tripled_.end());
         clip_convex_in_place(P, src.regions[k].planes, tmp_.clip_tmp);
         Box2 b;
         double a = 0;

@@ -52,6 +52,8 @@ double arc_interior_max(const RationalCurve& c, double z0, double z1, const Quad
 // ---------------------------------------------------------------- construction
 
 DomainMesh::DomainMesh(const std::array<Vec2, 3>& P) : grown_(grown_target(P)) {
+    const Vec2 c = (grown_[0] + grown_[1] + grown_[2]) / 3.0;
+    for (int i = 0; i < 3; ++i) tripled_[i] = c + (grown_[i] - c) * 3.0;
     faces_.resize(2);
     faces_[0].infinite = true;  // outside T': never a domain
     for (int i = 0; i < 3; ++i) add_vertex(P[i]);

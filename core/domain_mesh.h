@@ -90,7 +90,7 @@ public:
         double tie_slack = 0;
     };
     struct Stats { long splits = 0, merges = 0, snaps = 0, warnings = 0, rehooks = 0, tiny_chords = 0, line_pairs = 0, hole_chords = 0,
-                   departures = 0, unfolds = 0, side_change_cuts = 0; };
+                   departures = 0, unfolds = 0, side_change_cuts = 0, dropped_pieces = 0; };
 
     // Events a caller may watch while a source is inserted (all optional).
     struct Listener {
@@ -225,7 +225,7 @@ private:
     // Buffers reused across calls so the insertion does not allocate in its inner loops. Their
     // contents never outlive one call; a copy of the mesh starts with empty ones.
     struct Scratch {
-        std::vector<int> snapshot, pending, inside, rest, cur, nxt, ids;
+        std::vector<int> snapshot, pending, inside, rest, cur, nxt, ids, dropped;
         std::vector<SplitPiece> pieces, hp_pieces;
         std::vector<int> hes, edge_list, zero_list, zverts, fh, fids;
         std::vector<uint64_t> edge_mark, he_mark, seen_mark;  // an entry is marked if it equals its stamp
@@ -332,6 +332,7 @@ private:
     struct RegionBoxes { Box2 box[7]; bool empty[7]; bool thin[7] = {}; };  // thin: clip_regions_to_target
     long relabels_ = 0;  // pieces given to a source, ever (insert: did anything change?)
     std::array<Vec2, 3> grown_;  // T' grown by kCluster, for the regions' boxes (grown_target)
+    std::array<Vec2, 3> tripled_;  // grown_ three times as large about its centre (clip_regions_to_target)
     static std::array<Vec2, 3> grown_target(const std::array<Vec2, 3>& P);
     void clip_regions_to_target(const SourceProjection& src, RegionBoxes& out);
     static bool region_box_misses(const Box2& b, const RegionBoxes& boxes, size_t k);
@@ -347,6 +348,7 @@ private:
         faces_[F].tie_slack = std::max(faces_[F].tie_slack, unit_box_bound(faces_[F].poly - q));
     }
     void claim_cracks(const SourceProjection& src, unsigned may_win);
+    void set_aside_dropped_pieces(const SourceProjection& src, unsigned may_win);
     void claim_crack(int P, const SourceProjection& src, unsigned may_win);
     void claim_sliver(int P, const SourceProjection& src, unsigned may_win);
     size_t leftover_region(int P, const SourceProjection& src, unsigned may_win, size_t last);

@@ -668,14 +668,21 @@ bool DomainMesh::straight_face_range(int f, const Quadratic2& g, const Box2& b, 
     return std::isfinite(lo) && std::isfinite(hi);
 }
 
-// g = 0 a line pair crossing on or near the face (within kOffCurve of its box): the face is cut by
-// one line, then each piece by the other, and a piece's sign is the product of its sides of the
-// two lines times g's sign off both (g = k L1 L2, k's sign that of g's quadratic part against
-// L1 L2's). Each cut is a line's, whose crossings are simple; cut at once, the four chords from
-// the centre met at one point, where a cluster of vertices 1e-7 across on the face's boundary left
-// their hooks ambiguous (generate_pairs5.py "pow2_coords" 1147, side A, target 7, the paper's
-// order: two planes' line pair crossing at such a cluster, the face linked into one loop along
-// both lines' sides, and a quadrant where the nearer plane's d^2 is 2.7e-9 kept 7.3e-7).
+// g = 0 a line pair whose lines come within kOffCurve of each other on the face's box (crossing on
+// or near the face, or at a small angle beyond it): the face is cut by one line, then each piece by
+// the other, and a piece's sign is the product of its sides of the two lines times g's sign off
+// both (g = k L1 L2, k's sign that of g's quadratic part against L1 L2's). Each cut is a line's,
+// whose crossings are simple; cut at once, the four chords from the centre met at one point, where
+// a cluster of vertices 1e-7 across on the face's boundary left their hooks ambiguous
+// (generate_pairs5.py "pow2_coords" 1147, side A, target 7, the paper's order: two planes' line
+// pair crossing at such a cluster, the face linked into one loop along both lines' sides, and a
+// quadrant where the nearer plane's d^2 is 2.7e-9 kept 7.3e-7). Lines that close anywhere on the
+// face make a vertex there on either as far as the chords can tell: generate_pairs7.py
+// "aniso_grid" 14329 (B's target 33, a needle 7.6e-5 wide, all three orders): an edge's quadratic
+// less a face's, lines 5.6e-6 rad apart crossing 0.04 beyond T', 2.2e-7 apart at its far end,
+// where the vertices that one line crosses between lay nearer the other; each line got the
+// vertices of one end, neither a chord, and a strip 3.3e-6 wide along the needle went whole to
+// the face, up to 7.4e-12 where d^2 is 1.7e-14.
 bool DomainMesh::split_by_line_pair(int f, const Quadratic2& g, double l2_rounding, std::vector<SplitPiece>& out) {
     if (!(g.a * g.c - g.b * g.b < 0)) return false;
     ConicDecomposition& dec = tmp_.dec;
@@ -685,7 +692,10 @@ bool DomainMesh::split_by_line_pair(int f, const Quadratic2& g, double l2_roundi
     Vec2 m;
     if (!line_pair_centre(l1, l2, m)) return false;
     const Box2 b = cached_face_box(f);
-    if (!(m.x >= b.lo.x - kOffCurve && m.x <= b.hi.x + kOffCurve && m.y >= b.lo.y - kOffCurve && m.y <= b.hi.y + kOffCurve)) return false;
+    const Vec2 beyond{std::max({b.lo.x - m.x, m.x - b.hi.x, 0.0}), std::max({b.lo.y - m.y, m.y - b.hi.y, 0.0})};  // m to the box
+    const double sine = std::fabs(cross(l1.u, l2.u)) / (norm(l1.u) * norm(l2.u));
+    // The centre within kOffCurve of the box, or the lines' least gap on the box within kOffCurve.
+    if (!(std::max(beyond.x, beyond.y) <= kOffCurve || norm(beyond) * sine <= kOffCurve)) return false;
     const Vec2 n1 = perp(l1.u), n2 = perp(l2.u);
     const double k = g.a * n1.x * n2.x + g.b * (n1.x * n2.y + n1.y * n2.x) + g.c * n1.y * n2.y;
     if (!(k != 0)) return false;
@@ -755,8 +765,15 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
         if (snap_to_end(s, cur, p, kSnap) || snap_to_end_on_curve(s, cur, p)) continue;
         if (!(z > edges_[cur].z0 && z < edges_[cur].z1)) continue;
         const double hi = k + 1 < nroots ? std::min(roots[k + 1], edges_[cur].z1) : edges_[cur].z1;
-        if (!polish_on_two(g, eq, p) && polish_along_arc(g, eq, curve, edges_[cur].z0, hi, z, p) && snap_to_end(s, cur, p, kSnap))
-            continue;
+        // Polished, the crossing may have come within kSnap of an end: then it is that end, as it
+        // would be before polishing. (Generate_pairs9.py "tinydiff_coinc" 7754, A's target 3,
+        // nearest first, the 5th insertion: a region line through a vertex where the face touches
+        // itself crossed an arc into that vertex 8e-9 from it; the second vertex split the line's
+        // chord in two, the halves' ends interleaved along the boundary, the face stayed whole
+        // across the line, and a piece 0.29 deep in the source's corner region took its edge
+        // region's label.)
+        if (!polish_on_two(g, eq, p)) polish_along_arc(g, eq, curve, edges_[cur].z0, hi, z, p);
+        if (snap_to_end(s, cur, p, kSnap)) continue;
         // Polished onto g = 0 where g is flat (near a line pair's centre) the point may move past
         // the end of a straight arc: then it is that end (degenerate pair "mirror" 16298: a
         // vertex 3.4e-8 beyond a corner put the boundary out of order, the two lines' chords

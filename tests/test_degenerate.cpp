@@ -128,21 +128,26 @@ bool polynomial_and_d2(const TargetSolver& ts, const TriangleMesh& B, Vec2 p, do
     return polynomial_and_d2(*ts.domain_mesh(), ts.frame(), B, p, poly, d2);
 }
 
+// fn(p) at each point p of an n x n barycentric grid strictly inside T' (frame).
+template <class Fn>
+void for_each_grid_point(const TargetFrame& fr, int n, Fn&& fn) {
+    const auto& c = fr.corners;
+    for (int i = 1; i < n; ++i)
+        for (int j = 1; i + j < n; ++j) fn(c[0] + (c[1] - c[0]) * (double(i) / n) + (c[2] - c[0]) * (double(j) / n));
+}
+
 // How many points of an n x n barycentric grid strictly inside T' have a domain polynomial off
 // d2_at(p), an oracle's d^2 (frame units, in its own precision), by more than tol (1 + d^2); a
 // point in no domain counts too.
 template <class D2>
 int grid_points_off(const DomainMesh& mesh, const TargetFrame& fr, int n, double tol, D2 d2_at) {
-    const auto& c = fr.corners;
     int off = 0;
-    for (int i = 1; i < n; ++i)
-        for (int j = 1; i + j < n; ++j) {
-            const Vec2 p = c[0] + (c[1] - c[0]) * (double(i) / n) + (c[2] - c[0]) * (double(j) / n);
-            const int f = mesh.face_at(p);
-            if (f <= 0) { ++off; continue; }
-            const auto d2 = d2_at(p);
-            off += std::abs(mesh.faces()[f].poly(p) - d2) > tol * (1 + d2);
-        }
+    for_each_grid_point(fr, n, [&](Vec2 p) {
+        const int f = mesh.face_at(p);
+        if (f <= 0) { ++off; return; }
+        const auto d2 = d2_at(p);
+        off += std::abs(mesh.faces()[f].poly(p) - d2) > tol * (1 + d2);
+    });
     return off;
 }
 // The same against brute force over B.
@@ -4222,20 +4227,17 @@ TEST(Degenerate, LeanInsertionDefersToThePaperWhereARegionIsThin) {
 // those within `margin` of some domain's boundary: the domains tile T' (an oracle independent of
 // validate(): each face's own point-in-face test, its loops as they are).
 int grid_points_not_tiled(const DomainMesh& mesh, const TargetFrame& fr, int n, double margin) {
-    const auto& c = fr.corners;
     int off = 0;
-    for (int i = 1; i < n; ++i)
-        for (int j = 1; i + j < n; ++j) {
-            const Vec2 p = c[0] + (c[1] - c[0]) * (double(i) / n) + (c[2] - c[0]) * (double(j) / n);
-            int in = 0;
-            bool near = false;
-            for (size_t f = 1; f < mesh.faces().size(); ++f) {
-                if (!mesh.faces()[f].alive) continue;
-                near = near || mesh.near_boundary((int)f, p, margin);
-                in += mesh.point_in_face((int)f, p);
-            }
-            off += !near && in != 1;
+    for_each_grid_point(fr, n, [&](Vec2 p) {
+        int in = 0;
+        bool near = false;
+        for (size_t f = 1; f < mesh.faces().size(); ++f) {
+            if (!mesh.faces()[f].alive) continue;
+            near = near || mesh.near_boundary((int)f, p, margin);
+            in += mesh.point_in_face((int)f, p);
         }
+        off += !near && in != 1;
+    });
     return off;
 }
 
@@ -4269,12 +4271,147 @@ TEST(Degenerate, HoleWhoseLongestArcIsAChordGoesToTheFaceAroundIt) {
         [&](const DomainMesh& mesh, const TargetFrame& fr, uint32_t s, const char* label) {
             EXPECT_EQ(grid_points_not_tiled(mesh, fr, 500, 1e-9), 0) << "after source " << s << ", " << label;
             if (s != 1) return;
-            const auto& c = fr.corners;
-            for (int i = 1; i < 500; ++i)
-                for (int j = 1; i + j < 500; ++j) {
-                    const int f = mesh.face_at(c[0] + (c[1] - c[0]) * (i / 500.0) + (c[2] - c[0]) * (j / 500.0));
-                    lens_points += f > 0 && mesh.faces()[f].label.source == 1;
-                }
+            for_each_grid_point(fr, 500, [&](Vec2 p) {
+                const int f = mesh.face_at(p);
+                lens_points += f > 0 && mesh.faces()[f].label.source == 1;
+            });
         });
     EXPECT_GT(lens_points, 20);  // the case is there (twice: unwatched and watched)
+}
+
+// A crossing of a region line with an arc, polished onto both curves, within kSnap of the arc's end
+// is that end, as it is before polishing (DomainMesh::split_arc_at_sign_changes). A target 1e-15
+// across among near-coincident point-like sources and one large one (generate_pairs9.py
+// "tinydiff_coinc" 7754, A's target 3, nearest first; reduced to 5 of B's faces, in the order
+// inserted): the fifth source's line between its corner region a and its edge region ab runs
+// through a vertex where a face touches itself, and crosses an arc into that vertex 8e-9 from it.
+// Kept as a second vertex, it split the line's chord in two whose ends interleaved along the
+// face's boundary; the face stayed whole across the line, and a piece of it 0.29 deep in the corner
+// region took the edge region's label (validate(true): "lies outside the label's region"; d^2 only
+// 3e-12 off, under a coincident source). Oracle: at each domain's interior point, its polynomial is
+// the distance to its labelled source by brute force (without the change, 4.3e-12 where that source
+// is 0.085 away).
+TEST(Degenerate, CrossingPolishedWithinSnapOfAVertexIsThatVertex) {
+    const TriangleMesh T = make_mesh({{7.6816791428035023e-05, 9.9815608852796053e-05, 6.6885200143156743e-06},
+                                      {7.6816791428609176e-05, 9.9815608852330307e-05, 6.6885200144600477e-06},
+                                      {7.6816791428736421e-05, 9.9815608852991847e-05, 6.6885200141230226e-06}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{6.0811849973513276e-05, 4.8033985352764984e-05, 3.3915068127618858e-05},
+                                      {8.214224301514364e-05, 0.00010399976887440028, 3.9241389629344196e-06},
+                                      {-2.1281655778712219e-06, 7.0844849445157959e-05, 3.1717490731495432e-05},
+                                      {7.681679142846022e-05, 9.9815608852706078e-05, 6.6885200142995765e-06},
+                                      {7.681679142815022e-05, 9.9815608852511762e-05, 6.6885200144367272e-06},
+                                      {7.6816791428420552e-05, 9.981560885223567e-05, 6.68852001453212e-06},
+                                      {7.6816791428035037e-05, 9.9815608852796053e-05, 6.6885200143156692e-06},
+                                      {7.681679142860919e-05, 9.9815608852330321e-05, 6.6885200144600426e-06},
+                                      {7.6816791428736434e-05, 9.981560885299186e-05, 6.6885200141230175e-06},
+                                      {7.6816791428372034e-05, 9.9815608852327488e-05, 6.6885200144945999e-06},
+                                      {7.6816791428438916e-05, 9.9815608852614639e-05, 6.6885200143466825e-06},
+                                      {7.6816791428047736e-05, 9.9815608852843636e-05, 6.6885200142909359e-06},
+                                      {7.6816791428435893e-05, 9.9815608852714196e-05, 6.6885200142990665e-06}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {3, 9, 10}, {3, 11, 12}});
+    int fifth = 0;  // domains of the fifth source probed (the case is there)
+    insert_into_bare_mesh(
+        T, S, [](const DomainMesh&, const TargetFrame&, const char*) {},
+        [&](const DomainMesh& mesh, const TargetFrame& fr, uint32_t s, const char* label) {
+            for (size_t f = 1; f < mesh.faces().size(); ++f) {
+                const DomainMesh::Face& F = mesh.faces()[f];
+                Vec2 p;
+                if (!F.alive || F.infinite || !mesh.interior_point((int)f, p)) continue;
+                const std::array<Vec3, 3> c = source_in_frame(fr, S.corners(F.label.source));
+                const double own = nearest_feature(Vec3(p.x, p.y, 0), c[0], c[1], c[2]).d2;
+                EXPECT_NEAR(F.poly(p), own, 1e-9) << "face " << f << " after source " << s << ", " << label;
+                fifth += F.label.source == 4;
+            }
+        });
+    EXPECT_GT(fifth, 2);
+}
+
+// d^2 at p (frame) by brute force over S's triangles 0 .. last, each taken into the frame
+// (nearest_feature): frame units, without the world's rounding of p.
+double frame_d2(const TargetFrame& fr, const TriangleMesh& S, uint32_t last, Vec2 p) {
+    double best = HUGE_VAL;
+    for (uint32_t t = 0; t <= last; ++t) {
+        const std::array<Vec3, 3> c = source_in_frame(fr, S.corners(t));
+        best = std::min(best, nearest_feature(Vec3(p.x, p.y, 0), c[0], c[1], c[2]).d2);
+    }
+    return best;
+}
+
+// A line pair whose lines come within kOffCurve of each other over the face (crossing at a small
+// angle just beyond it) is cut one line at a time, as one crossing on or near the face is
+// (DomainMesh::split_by_line_pair): a vertex near both lines may be taken for either, and the
+// chords are then found on the wrong line. A needle target 7.6e-5 wide among a grid's triangles
+// 2.4e10 from the origin (generate_pairs7.py "aniso_grid" 14329, B's target 33, all three orders;
+// reduced to 3 of A's faces): an edge's quadratic less a face's is a line pair whose lines cross
+// 5.6e-6 rad apart 0.04 beyond T''s far end, 2.2e-7 apart there. One line crosses a strip 3.3e-6
+// wide along the whole needle, from a cluster of vertices at its near end to one at its far end,
+// where the vertices lay 9e-8 from the other line and 1.1e-7 to 1.6e-7 from it: each line got one
+// end's vertices, neither a chord, and the strip went whole to the face, whose d^2 is up to 7.4e-12
+// where the edge's is 1.7e-14 (validate(): "d^2 jumps by 2.02309e-12" after the third source).
+// Oracle: on a grid over T', each domain's polynomial is d^2 by brute force over the sources
+// inserted, to 1e-13.
+TEST(Degenerate, NearlyParallelLinePairIsCutOneLineAtATime) {
+    const TriangleMesh T = make_mesh({{24278860832.01427, 27232661521.06016, 19424857556.694656},
+                                      {24270922671.9792, 27253545702.08013, 19423570731.310734},
+                                      {24270924208.765316, 27253546310.95854, 19423571139.056797}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{24278860567.36482, 27232661420.55138, 19424857557.07078},
+                                      {24270927216.538345, 27253547499.096798, 19423571879.446365},
+                                      {24270929994.634308, 27253548596.790535, 19423572567.897617},
+                                      {24278860764.9805, 27232661494.662937, 19424857541.53589},
+                                      {24270924141.73154, 27253546284.561317, 19423571123.89803}},
+                                     {{0, 1, 2}, {0, 3, 4}, {0, 4, 1}});
+    insert_into_bare_mesh(
+        T, S, [](const DomainMesh&, const TargetFrame&, const char*) {},
+        [&](const DomainMesh& mesh, const TargetFrame& fr, uint32_t s, const char* label) {
+            const auto d2_at = [&](Vec2 p) { return frame_d2(fr, S, s, p); };
+            EXPECT_EQ(grid_points_off(mesh, fr, 400, 1e-13, d2_at), 0) << "after source " << s << ", " << label;
+        });
+}
+
+// A piece that a region's cut left outside it, though the source is nearer at a corner of it that
+// lies inside the region (deeper than a vertex on the region's line can be), gets the paper's
+// insertion (DomainMesh::set_aside_dropped_pieces). A target 5e-14 across far (1e10 times its size)
+// from the origin among sources of its size (generate_pairs10.py "unused_verts" 5288, side A,
+// target 3, the paper's order, the 7th insertion; reduced to 2 of B's faces): a sliver under 2.6e-7
+// wide along T''s edge, which the second source's face region line crosses at 1e-6 rad. The cut
+// dropped its chord as hugging the sliver's boundary and sent the whole sliver outside the face
+// region, to the edge region across the line, which the lean insertion had passed over as nowhere
+// nearer; the end of the sliver inside the face region, up to 1.34e-7 deep, kept the first source,
+// d^2 0.202 where the second gives 0.126 ("d^2 jumps by 0.0758406" after the second source,
+// unwatched). Oracle: brute force at points 2e-9 to 4e-8 inside T''s edge along that end, each
+// domain's polynomial against d^2 over the sources inserted, to 1e-6 (without the change, 86 of the
+// 155 are off after the second source).
+TEST(Degenerate, PieceADroppedChordLeftOutsideARegionWhereTheSourceIsNearer) {
+    const TriangleMesh T = make_mesh({{0.0013591025472424125, -1.9393660898406395e-19, 1.4026773368556679e-19},
+                                      {0.0013591025472253966, 3.1436383156409813e-15, 5.1213045583876192e-14},
+                                      {0.0013591025472741195, -4.5664473474117023e-14, 5.6341100557705917e-14}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{0.0013591025472424129, 0, 0},
+                                      {0.0013591025472032439, -4.9844892725515083e-15, 5.7091843000595889e-14},
+                                      {0.0013591025472498384, 1.2111790223660475e-14, 4.4726687231652178e-14},
+                                      {0.0013591025472741197, -4.5664431048699598e-14, 5.6341069872848717e-14},
+                                      {0.0013591025472275253, -6.2760710544911578e-14, 6.8706225641792427e-14},
+                                      {0.0013591025472666943, -5.7776221272360071e-14, 1.161438264119654e-14}},
+                                     {{0, 1, 2}, {3, 4, 5}});
+    int inside = 0;  // window points inside T' (the case is there)
+    insert_into_bare_mesh(
+        T, S, [](const DomainMesh&, const TargetFrame&, const char*) {},
+        [&](const DomainMesh& mesh, const TargetFrame& fr, uint32_t s, const char* label) {
+            const auto& c = fr.corners;  // the sliver lies along the edge from c[2] to c[1]
+            Vec2 in = perp(c[1] - c[2]) / norm(c[1] - c[2]);
+            if (dot(in, c[0] - c[2]) < 0) in = -1.0 * in;
+            int off = 0;
+            for (int i = 0; i <= 30; ++i)
+                for (double w : {2e-9, 5e-9, 1e-8, 2e-8, 4e-8}) {
+                    const Vec2 p = c[2] + (c[1] - c[2]) * (0.39 + 0.14 * i / 30) + in * w;
+                    const int f = mesh.face_at(p);
+                    if (f <= 0) continue;
+                    ++inside;
+                    off += std::fabs(mesh.faces()[f].poly(p) - frame_d2(fr, S, s, p)) > 1e-6;
+                }
+            EXPECT_EQ(off, 0) << "after source " << s << ", " << label;
+        });
+    EXPECT_GT(inside, 500);
 }
