@@ -544,7 +544,8 @@ TopConfirmation confirm_top(const VoxelGrid& grid, int side, const TargetTable& 
             if (u + std::max(slack, cut_slack) > L + tol && r > tol) {
                 // Over many nearly parallel sources (a fan): bounded from those that cover it.
                 double cover_slack = 0;
-                const double c = cover_bound(g, tg.o, S, L + 0.5 * tol, cover_slack);
+                const std::array<Vec3, 3> whole{Vec3{0, 0, 0}, tg.e1, tg.e2};
+                const double c = cover_bound(g, tg.o, S, L + 0.5 * tol, cover_slack, &whole);
                 if (c + cover_slack <= L + tol) u = c, cut_slack = std::max(cut_slack, cover_slack);
             }
             u += std::max(slack, cut_slack);

@@ -16,7 +16,8 @@
 //     boundary meets K, since a path from inside U to a point outside crosses that boundary. An edge
 //     (by vertex indices) is inside U where kept triangles lie on both its sides: each covers a
 //     half-disc of its interior points; a vertex whose edges are all inside is too. Any other edge
-//     (a boundary, a T-junction, an overlap) is tested: such cases are only left to the subdivision;
+//     (a boundary, a T-junction, an overlap, a fold) is inside U where its part in K lies inside
+//     other kept triangles; else it is tested: such cases are only left to the subdivision;
 //   - the strip of q outside K is within delta of K but near a corner of angle a, where K's corner
 //     lies delta / sin(a / 2) inside, and d is 1-Lipschitz: the bound over q is max b_S plus that;
 //   - at a needle's tip that is large (5e-7 of the coordinates for an angle of 3e-8), and the tip's
@@ -61,9 +62,11 @@ std::array<Vec2, 3> inward(const std::array<Vec2, 3>& p) {
     return m;
 }
 
-// Whether the segment [a, b] meets K = {x: dot(x - p[i], m[i]) >= delta for each i}.
-bool meets(const Vec2& a, const Vec2& b, const std::array<Vec2, 3>& p, const std::array<Vec2, 3>& m, double delta) {
-    double t0 = 0, t1 = 1;
+// The part a + t (b - a), t in [t0, t1], of the segment [a, b] in K = {x: dot(x - p[i], m[i]) >=
+// delta for each i}; false if it misses K.
+bool clip(const Vec2& a, const Vec2& b, const std::array<Vec2, 3>& p, const std::array<Vec2, 3>& m, double delta, double& t0,
+          double& t1) {
+    t0 = 0, t1 = 1;
     for (int i = 0; i < 3; ++i) {
         const double fa = dot(a - p[i], m[i]) - delta, fb = dot(b - p[i], m[i]) - delta;
         if (fa < 0 && fb < 0) return false;
@@ -71,6 +74,28 @@ bool meets(const Vec2& a, const Vec2& b, const std::array<Vec2, 3>& p, const std
         if (fb < 0) t1 = std::min(t1, fa / (fa - fb));
     }
     return t0 <= t1;
+}
+
+// Whether the part [t0, t1] of the segment [a, b] lies in the union of the triangles `kept` (either
+// orientation), each shrunk by delta: then none of its points is on the union's boundary, whatever
+// the triangles on its own sides. (Generate_pairs9.py "tiny_coplanar_retri" 7793: needles of B
+// from a corner to a hub of rounding-sized triangles, one folded over its neighbour by the hub's
+// rounding, so both lay on one side of their shared edge; the next needle covers that edge.)
+bool covered(const Vec2& a, const Vec2& b, double t0, double t1, const std::vector<std::array<Vec2, 3>>& kept, double delta) {
+    std::vector<std::pair<double, double>> in;
+    for (std::array<Vec2, 3> ps : kept) {
+        if (cross(ps[1] - ps[0], ps[2] - ps[0]) < 0) std::swap(ps[1], ps[2]);
+        double s0, s1;
+        if (clip(a, b, ps, inward(ps), delta, s0, s1)) in.push_back({s0, s1});
+    }
+    std::sort(in.begin(), in.end());
+    double reached = t0;  // [t0, reached] is covered, up to the point itself
+    for (const auto& [s0, s1] : in) {
+        if (s0 > reached) break;
+        reached = std::max(reached, s1);
+        if (reached >= t1) return true;
+    }
+    return false;
 }
 
 // Whether x lies in the triangle p (either orientation) at least delta inside every edge.
@@ -189,13 +214,21 @@ double thin_cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3,
 
 }  // namespace
 
-double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack) {
-    const Vec3 nq = cross(q[1] - q[0], q[2] - q[0]);
-    const double la = norm(q[1] - q[0]), lb = norm(q[2] - q[0]), lq = norm(nq);
-    double bound = lq > 0 ? cover_bound_of(g, o, q, nq / lq, goal, slack) : HUGE_VAL;
+double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack,
+                   const std::array<Vec3, 3>* whole) {
+    // q is seen along the normal of `whole` where given: a small piece's corners are known to an
+    // ulp of the whole's size, so its own normal is off by about that over its size, and a long
+    // source's far corners seen along it move by as much (generate_pairs9.py "tiny_coplanar_retri"
+    // 7793: needles of B 1.5e-3 long, pieces 1e-10 across them, the bound 2.6e-13 where the goal was
+    // 1.9e-13 and every corner is within 3.2e-14 of the plane; the target's subdivision stayed open).
+    const std::array<Vec3, 3>& w = whole ? *whole : q;
+    const Vec3 nw = cross(w[1] - w[0], w[2] - w[0]);
+    const double la = norm(w[1] - w[0]), lb = norm(w[2] - w[0]), lw = norm(nw);
+    double bound = lw > 0 ? cover_bound_of(g, o, q, nw / lw, goal, slack) : HUGE_VAL;
     // Seen along a normal whose rounding (an angle, as along_normal's) over q's length reaches the
     // goal, the sources' distances along it are that uncertain: the thin bound may do better.
-    if (bound <= goal || 16 * 0x1p-52 * la * lb * std::max({la, lb, norm(q[2] - q[1])}) <= 1e-3 * goal * lq) return bound;
+    const double lq = std::max({norm(q[1] - q[0]), norm(q[2] - q[0]), norm(q[2] - q[1])});
+    if (bound <= goal || 16 * 0x1p-52 * la * lb * lq <= 1e-3 * goal * lw) return bound;
     double thin_slack = 0;
     const double thin = thin_cover_bound(g, o, q, goal, thin_slack);
     if (thin < bound) bound = thin, slack = thin_slack;
@@ -290,8 +323,11 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
         for (j = i; j < sides.size() && sides[j].a == sides[i].a && sides[j].b == sides[i].b; ++j)
             (sides[j].side > 0 ? left : right) = true;
         if (left && right) continue;  // inside U
-        for (size_t k = i; k < j; ++k)
-            if (meets(sides[k].pa, sides[k].pb, pq, m, delta)) return HUGE_VAL;
+        for (size_t k = i; k < j; ++k) {
+            double t0, t1;
+            if (clip(sides[k].pa, sides[k].pb, pq, m, delta, t0, t1) && !covered(sides[k].pa, sides[k].pb, t0, t1, kept, delta))
+                return HUGE_VAL;
+        }
     }
     // The strip outside K: at corner i (angle a), K's corner lies delta / sin(a / 2) inside, and
     // elsewhere a point of the strip is within delta of K. A needle's tip is bounded instead.
