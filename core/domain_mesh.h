@@ -317,6 +317,7 @@ private:
     bool chord_past_departure(const SplitCall& s, const Chord& c, double tol, Chord& out) const;
     int loop_of(int f, int v) const;
     void close_hole_crossings(SplitCall& s);
+    void add_hole_candidate(const SplitCall& s, const Chord& c, bool short_chord);
     bool chord_inside(const SplitCall& s, const Chord& c) const;
     double path_area(int from, int to, Box2& box) const;
     bool pinched_lobes(const SplitCall& s, int va, int vb, int& ha, int& hb) const;

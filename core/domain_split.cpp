@@ -1036,6 +1036,21 @@ void DomainMesh::close_hole_crossings(SplitCall& s) {
     }
 }
 
+// A chord between two loops of the face dropped as hugging the boundary, kept for
+// close_hole_crossings: the curve's own, if it runs inside the face, else, between vertices closer
+// than kCluster, the straight chord joining them, if that does. The curve, a resolution off its
+// ends, may pass outside a gap between a hole and the outer loop that narrow. (Generate_pairs12.py
+// "snapped_corners" 8531, side A, target 0, nearest first: a line pair centred 1.5e-8 from T''s
+// corner, where a hole of the face ended 2.2e-8 from that corner; one line crossed the gap, the
+// hole and the face beyond, its chord across the gap ran outside T', no chord closed the hole's
+// crossing, and the face was not cut by that line: a wedge on its far side took the sign of the
+// near one, and a source 2.2 times d^2 there.)
+void DomainMesh::add_hole_candidate(const SplitCall& s, const Chord& c, bool short_chord) {
+    Chord straight;
+    if (chord_inside(s, c)) tmp_.hole_cands.push_back(c);
+    else if (short_chord && straight_chord(c.va, c.vb, straight) && chord_inside(s, straight)) tmp_.hole_cands.push_back(straight);
+}
+
 // A chord joining the same two vertices as one already found, through the same middle: the same
 // piece of curve on another component (a parabola is two components, one per arm, and where it
 // curves within T' both may reach the near arm: independent pair "soup" 3055, the chord inserted
@@ -1331,7 +1346,7 @@ void DomainMesh::add_chords_of_component(SplitCall& s, const CurveComponent& com
             // Dropped, unless what lies between the chord and the boundary it hugs is a real sliver.
             if (((near && (boundary_hugs_chord(f, c, tol) || thin_beyond_chord(f, c))) || noise_chord_hugged(f, comp, c)) &&
                 !real_sliver_beside_chord(s, c)) {
-                if (c.va != c.vb && loop_of(f, c.va) != loop_of(f, c.vb) && chord_inside(s, c)) tmp_.hole_cands.push_back(c);
+                if (c.va != c.vb && loop_of(f, c.va) != loop_of(f, c.vb)) add_hole_candidate(s, c, short_chord);
                 continue;
             }
             if (near && !chord_inside(s, c)) {

@@ -4415,3 +4415,38 @@ TEST(Degenerate, PieceADroppedChordLeftOutsideARegionWhereTheSourceIsNearer) {
         });
     EXPECT_GT(inside, 500);
 }
+
+// A region line through the gap between a hole of the face and its outer loop, narrower than
+// kCluster, cuts the face there (DomainMesh::add_hole_candidate). Sources of a 1e-6 mesh whose
+// corners were snapped to within 1.4e-15 of T''s corner at the origin (generate_pairs12.py
+// "snapped_corners" 8531, side A, target 0, nearest first; reduced to the first three sources):
+// after two, the first source's face region holds a hole (the second's domains) ending 2.2e-8 from
+// T''s corner; the third's face quadratic less the first's is a line pair centred 1.5e-8 from that
+// corner, and one line crosses the gap, the hole and the face beyond. Its chord across the gap,
+// as the curve has it, ran outside the face and was dropped; the chord from the hole onwards,
+// alone, cut nothing, so the face stayed whole across that line, and a wedge beyond it took the
+// sign of the strip between the lines: the third source, d^2 2.2 times the truth ("d^2 jumps by
+// 0.000201637" after it). Oracle: brute force on a 400 x 400 grid after each source, each
+// domain's polynomial against d^2 over the sources inserted, to 1e-13 (without the change, 6144
+// of the 79,401 points are off after the third source, watched or not).
+TEST(Degenerate, RegionLineThroughTheGapBesideAHoleCutsTheFace) {
+    const TriangleMesh T = make_mesh({{0.0, 0.0, 0.0},
+                                      {-3.6135627127318917e-07, -1.529323291763144e-07, -5.427214623002534e-08},
+                                      {-6.34089071944075e-07, 5.983670705828916e-07, -1.2223793364994332e-07}},
+                                     {{0, 1, 2}});
+    const TriangleMesh S = make_mesh({{-5.069274203629245e-18, -1.3944930877329957e-15, -1.300177355741826e-15},
+                                      {-3.727101998053915e-07, -1.1508406230429452e-08, -3.7803880752454764e-08},
+                                      {-5.930829134257175e-07, 5.272880713866808e-07, -6.015621644044322e-08},
+                                      {-3.0445436396472827e-18, -1.190530045510162e-18, -8.498082770023337e-19},
+                                      {-6.907303406752535e-08, -3.8030944917909205e-07, 2.6874051027897073e-07},
+                                      {-4.6081723960013905e-07, 4.842796067936555e-07, -3.4220961096236485e-07},
+                                      {-6.614172588260713e-07, 2.2940918554844065e-07, -5.549924686960566e-07},
+                                      {-4.7409624969697205e-07, -1.216843231797279e-07, 2.9438177359971647e-07}},
+                                     {{0, 1, 2}, {3, 4, 5}, {3, 6, 7}});
+    insert_into_bare_mesh(
+        T, S, [](const DomainMesh&, const TargetFrame&, const char*) {},
+        [&](const DomainMesh& mesh, const TargetFrame& fr, uint32_t s, const char* label) {
+            const auto d2_at = [&](Vec2 p) { return frame_d2(fr, S, s, p); };
+            EXPECT_EQ(grid_points_off(mesh, fr, 400, 1e-13, d2_at), 0) << "after source " << s << ", " << label;
+        });
+}
