@@ -221,14 +221,24 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
     // source's far corners seen along it move by as much (generate_pairs9.py "tiny_coplanar_retri"
     // 7793: needles of B 1.5e-3 long, pieces 1e-10 across them, the bound 2.6e-13 where the goal was
     // 1.9e-13 and every corner is within 3.2e-14 of the plane; the target's subdivision stayed open).
-    const std::array<Vec3, 3>& w = whole ? *whole : q;
-    const Vec3 nw = cross(w[1] - w[0], w[2] - w[0]);
-    const double la = norm(w[1] - w[0]), lb = norm(w[2] - w[0]), lw = norm(nw);
-    double bound = lw > 0 ? cover_bound_of(g, o, q, nw / lw, goal, slack) : HUGE_VAL;
+    // Where that does not close q, q's own normal is tried too (a needle target's normal is no
+    // better known than its piece's: generate_pairs3.py "needle_fan" 60975, B to A, the interval
+    // went from 1.9e-10 to 3.1e-9 of the diagonal along the whole's alone).
+    const double lq = std::max({norm(q[1] - q[0]), norm(q[2] - q[0]), norm(q[2] - q[1])});
+    bool uncertain = false;  // seen along a normal whose rounding over q's length reaches the goal
+    double bound = HUGE_VAL;
+    for (const std::array<Vec3, 3>* w : {whole, &q}) {
+        if (!w || (bound <= goal)) continue;
+        const Vec3 nw = cross((*w)[1] - (*w)[0], (*w)[2] - (*w)[0]);
+        const double la = norm((*w)[1] - (*w)[0]), lb = norm((*w)[2] - (*w)[0]), lw = norm(nw);
+        double s = 0;
+        const double b = lw > 0 ? cover_bound_of(g, o, q, nw / lw, goal, s) : HUGE_VAL;
+        if (b < bound) bound = b, slack = s;
+        uncertain = uncertain || !(16 * 0x1p-52 * la * lb * lq <= 1e-3 * goal * lw);
+    }
     // Seen along a normal whose rounding (an angle, as along_normal's) over q's length reaches the
     // goal, the sources' distances along it are that uncertain: the thin bound may do better.
-    const double lq = std::max({norm(q[1] - q[0]), norm(q[2] - q[0]), norm(q[2] - q[1])});
-    if (bound <= goal || 16 * 0x1p-52 * la * lb * lq <= 1e-3 * goal * lw) return bound;
+    if (bound <= goal || !uncertain) return bound;
     double thin_slack = 0;
     const double thin = thin_cover_bound(g, o, q, goal, thin_slack);
     if (thin < bound) bound = thin, slack = thin_slack;
