@@ -52,6 +52,12 @@ struct Side {
     bool operator<(const Side& o) const { return a != o.a ? a < o.a : b < o.b; }
 };
 
+// The triangle p counter-clockwise (its last two corners swapped if it is clockwise).
+std::array<Vec2, 3> ccw(std::array<Vec2, 3> p) {
+    if (cross(p[1] - p[0], p[2] - p[0]) < 0) std::swap(p[1], p[2]);
+    return p;
+}
+
 // The inward unit normals of a counter-clockwise triangle's edges, edge i from p[i] to p[i + 1].
 std::array<Vec2, 3> inward(const std::array<Vec2, 3>& p) {
     std::array<Vec2, 3> m;
@@ -83,8 +89,8 @@ bool clip(const Vec2& a, const Vec2& b, const std::array<Vec2, 3>& p, const std:
 // rounding, so both lay on one side of their shared edge; the next needle covers that edge.)
 bool covered(const Vec2& a, const Vec2& b, double t0, double t1, const std::vector<std::array<Vec2, 3>>& kept, double delta) {
     std::vector<std::pair<double, double>> in;
-    for (std::array<Vec2, 3> ps : kept) {
-        if (cross(ps[1] - ps[0], ps[2] - ps[0]) < 0) std::swap(ps[1], ps[2]);
+    for (const std::array<Vec2, 3>& k : kept) {
+        const std::array<Vec2, 3> ps = ccw(k);
         double s0, s1;
         if (clip(a, b, ps, inward(ps), delta, s0, s1)) in.push_back({s0, s1});
     }
@@ -100,7 +106,7 @@ bool covered(const Vec2& a, const Vec2& b, double t0, double t1, const std::vect
 
 // Whether x lies in the triangle p (either orientation) at least delta inside every edge.
 bool inside(const Vec2& x, std::array<Vec2, 3> p, double delta) {
-    if (cross(p[1] - p[0], p[2] - p[0]) < 0) std::swap(p[1], p[2]);
+    p = ccw(p);
     const std::array<Vec2, 3> m = inward(p);
     for (int i = 0; i < 3; ++i)
         if (!(dot(x - p[i], m[i]) >= delta)) return false;
@@ -110,7 +116,7 @@ bool inside(const Vec2& x, std::array<Vec2, 3> p, double delta) {
 // The triangle s (either orientation) grown by `grow` on every side, as the half-planes that
 // clip_convex_in_place takes (regions.cpp).
 void grown_half_planes(std::array<Vec2, 3> s, double grow, std::vector<HalfPlane>& out) {
-    if (cross(s[1] - s[0], s[2] - s[0]) < 0) std::swap(s[1], s[2]);
+    s = ccw(s);
     const std::array<Vec2, 3> m = inward(s);
     out.resize(3);
     for (int k = 0; k < 3; ++k) out[k] = HalfPlane{m[k], dot(m[k], s[k]) - grow};

@@ -15,7 +15,8 @@ namespace hlens {
 // edges, every point's line along the normal meets one of them, and the bound is the largest of
 // their distances along the normal over the parts of q they cover, plus the strip's width.
 // `slack` becomes the bound's rounding (it is not in the returned value). `whole`: the triangle q is
-// a piece of (relative to o), whose normal is known better than q's: q is seen along it.
+// a piece of (relative to o), whose normal is usually known better than q's: q is seen along it
+// first, and along its own normal where that does not close it.
 double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack,
                    const std::array<Vec3, 3>* whole = nullptr);
 

@@ -1042,7 +1042,7 @@ void DomainMesh::close_hole_crossings(SplitCall& s) {
 // ends, may pass outside a gap between a hole and the outer loop that narrow. (Generate_pairs12.py
 // "snapped_corners" 8531, side A, target 0, nearest first: a line pair centred 1.5e-8 from T''s
 // corner, where a hole of the face ended 2.2e-8 from that corner; one line crossed the gap, the
-// hole and the face beyond, its chord across the gap ran outside T', no chord closed the hole's
+// hole and the face beyond, its chord across the gap ran outside the face, no chord closed the hole's
 // crossing, and the face was not cut by that line: a wedge on its far side took the sign of the
 // near one, and a source 2.2 times d^2 there.)
 void DomainMesh::add_hole_candidate(const SplitCall& s, const Chord& c, bool short_chord) {

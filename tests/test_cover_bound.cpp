@@ -37,6 +37,15 @@ double bound_of(const MeshGrid& g, const std::array<Vec3, 3>& q, double goal = 1
     return b;
 }
 
+// The largest brute-force distance to B over a barycentric grid of q (41 points a side).
+double sampled_max(const std::array<Vec3, 3>& q, const TriangleMesh& B) {
+    double truth = 0;
+    for (int i = 0; i <= 40; ++i)
+        for (int j = 0; i + j <= 40; ++j)
+            truth = std::max(truth, brute_distance(q[0] + (i / 40.0) * (q[1] - q[0]) + (j / 40.0) * (q[2] - q[0]), B));
+    return truth;
+}
+
 }  // namespace
 
 // A triangle over the middle of the fan crosses dozens of its sources. Seen along its own normal n,
@@ -114,10 +123,7 @@ TEST(CoverBound, NeverBelowTheDistanceAnywhereOnTheTriangle) {
         if (!(b < HUGE_VAL)) continue;
         ++bounded;
         folded += fold;
-        double truth = 0;
-        for (int i = 0; i <= 40; ++i)
-            for (int j = 0; i + j <= 40; ++j)
-                truth = std::max(truth, brute_distance(q[0] + (i / 40.0) * (q[1] - q[0]) + (j / 40.0) * (q[2] - q[0]), B));
+        const double truth = sampled_max(q, B);
         EXPECT_GE(b, truth) << "trial " << trial;
     }
     EXPECT_GE(bounded, 60) << "too few triangles bounded for the test to mean much";
@@ -220,10 +226,7 @@ TEST(CoverBound, ATriangleFoldedOverItsNeighbourIsCoveredByTheOthers) {
     const double b = bound_of(g, q);
     EXPECT_GE(b, h);
     EXPECT_LE(b, h + 1e-12);
-    double truth = 0;  // brute force over the triangle (h everywhere: B covers it)
-    for (int i = 0; i <= 40; ++i)
-        for (int j = 0; i + j <= 40; ++j)
-            truth = std::max(truth, brute_distance(q[0] + (i / 40.0) * (q[1] - q[0]) + (j / 40.0) * (q[2] - q[0]), B));
+    const double truth = sampled_max(q, B);  // brute force over the triangle (h everywhere: B covers it)
     EXPECT_NEAR(truth, h, 1e-15);
     // Past the square's side the fold covers nothing: no bound.
     EXPECT_EQ(bound_of(g, {q[0], Vec3{1.01, 0.995, h}, q[2]}), HUGE_VAL);
