@@ -17,7 +17,9 @@
 //     (by vertex indices) is inside U where kept triangles lie on both its sides: each covers a
 //     half-disc of its interior points; a vertex whose edges are all inside is too. Any other edge
 //     (a boundary, a T-junction, an overlap, a fold) is inside U where its part in K lies inside
-//     other kept triangles; else it is tested: such cases are only left to the subdivision;
+//     other kept triangles; else it is tested: such cases are only left to the subdivision. Which
+//     side a triangle lies on must be certain: from its projection, or, for a sliver thinner
+//     than the projection's rounding, from its normal (facing);
 //   - the strip of q outside K is within delta of K but near a corner of angle a, where K's corner
 //     lies delta / sin(a / 2) inside, and d is 1-Lipschitz: the bound over q is max b_S plus that;
 //   - at a needle's tip that is large (5e-7 of the coordinates for an angle of 3e-8), and the tip's
@@ -139,6 +141,23 @@ double along_normal(const std::vector<Vec3>& xs, const std::array<Vec3, 3>& S, c
     return std::min(by_plane, by_corners);
 }
 
+// Whether the orientation of the triangle c (input corners) seen along the unit vector n is
+// certain from its normal, where its projection is thinner than the projected corners' rounding
+// (generate_pairs6.py "sliver_strip" 63741: a sliver of A 1.5e-2 wide at one end and 1.6e5 long,
+// 2e5 from the target's corner, between two triangles of a coplanar strip: left out, it left a gap
+// in their union, and the sliver target over it stayed open, its interval 5.8e-9 of the diagonal).
+// The edges are input differences (one rounding each) and their cross product is off by a few
+// ulps of their product (with its component along n: under 16 ulps, n's and q's projection's own
+// rounding included): the sign of that component is certain where it is above 2^-48 of the
+// product, twice that. S not steep to n, as elsewhere. `orient`: +1 counter-clockwise.
+bool facing(const std::array<Vec3, 3>& c, const Vec3& n, int& orient) {
+    const Vec3 a = c[1] - c[0], b = c[2] - c[0], ns = cross(a, b);
+    const double along = dot(ns, n);
+    if (!(std::fabs(along) >= kSteep * norm(ns) && std::fabs(along) > 0x1p-48 * norm(a) * norm(b))) return false;
+    orient = along > 0 ? 1 : -1;
+    return true;
+}
+
 // The triangles of g's mesh listed in the voxels of o + q, each once.
 std::vector<uint32_t> triangles_near(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q) {
     std::vector<uint32_t> near;
@@ -243,8 +262,15 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
         uncertain = uncertain || !(16 * 0x1p-52 * la * lb * lq <= 1e-3 * goal * lw);
     }
     // Seen along a normal whose rounding (an angle, as along_normal's) over q's length reaches the
-    // goal, the sources' distances along it are that uncertain: the thin bound may do better.
-    if (bound <= goal || !uncertain) return bound;
+    // goal, the sources' distances along it are that uncertain: the thin bound may do better. So
+    // it may for q thinner than the goal: seen along a needle target's normal, which its corners'
+    // rounding tilts from the sources' common plane (by 1e-9 rad for a needle 1e-9 wide at
+    // coordinates 1e-2), a needle source's far corners seem that tilt times their reach off q,
+    // and its own plane is no better known (generate_pairs6.py "sliver_strip" 65109, B to A:
+    // 7e-12 where the goal was 1.8e-12; the needle target stayed open, its interval 9.4e-9 of the
+    // diagonal). The thin bound is at least q's height.
+    const double height = norm(cross(q[1] - q[0], q[2] - q[0])) / lq;
+    if (bound <= goal || !(uncertain || height < goal)) return bound;
     double thin_slack = 0;
     const double thin = thin_cover_bound(g, o, q, goal, thin_slack);
     if (thin < bound) bound = thin, slack = thin_slack;
@@ -297,14 +323,19 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
         // a few ulps of m times the edges; a sliver 1e-12 wide between two triangles is kept.
         const double area2 = cross(ps[1] - ps[0], ps[2] - ps[0]);
         const double m = std::max({norm(S[0]), norm(S[1]), norm(S[2])});
-        if (!(std::fabs(area2) > 0x1p-46 * m * (norm(ps[1] - ps[0]) + norm(ps[2] - ps[0])))) continue;
+        const bool projected = std::fabs(area2) > 0x1p-46 * m * (norm(ps[1] - ps[0]) + norm(ps[2] - ps[0]));
+        int orient = area2 > 0 ? 1 : -1;
+        if (!projected && !facing(c, n, orient)) continue;
         // S bounds d only where it covers q: over q's part within S (grown by more than the
         // projections' rounding, so that it holds the exact part), back in q's plane. One that
-        // misses q has no edge through q's shrunk part either.
-        grown_half_planes(ps, 0x1p-46 * std::max(M, m), planes);
+        // misses q has no edge through q's shrunk part either. Where S's projection is thinner
+        // than its rounding, the part is not known: all of q is taken (a larger bound).
         part.assign(pq.begin(), pq.end());
-        clip_convex_in_place(part, planes, tmp);
-        if (part.empty()) continue;
+        if (projected) {
+            grown_half_planes(ps, 0x1p-46 * std::max(M, m), planes);
+            clip_convex_in_place(part, planes, tmp);
+            if (part.empty()) continue;
+        }
         xs.clear();
         for (const Vec2& x : part) xs.push_back(q[0] + (x.x - pq[0].x) * e1 + (x.y - pq[0].y) * e2);
         const double b = along_normal(xs, S, n, ns, ls, cosine);
@@ -315,7 +346,7 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
         const Tri& f = B.triangles[t];
         for (int i = 0; i < 3; ++i) {
             const int j = (i + 1) % 3;
-            Side s{f[i], f[j], area2 > 0 ? 1 : -1, ps[i], ps[j]};
+            Side s{f[i], f[j], orient, ps[i], ps[j]};
             if (s.a > s.b) std::swap(s.a, s.b), std::swap(s.pa, s.pb), s.side = -s.side;
             sides.push_back(s);
         }

@@ -64,19 +64,22 @@ TEST(CoverBound, ATriangleOverAFanIsBoundedByItsHeightAlongItsNormal) {
     EXPECT_EQ(bound_of(g, q, 0.5 * expect), HUGE_VAL);
 }
 
-// Where the union does not cover the triangle, there is no bound: past the rim, over a hole.
+// Where the union does not cover the triangle, there is no bound: past the rim, over a hole. (The
+// goal, 0.1, is below q's height over its longest edge, 0.5: else the thin bound, at least that
+// height, would be tried, and a bound of 0.504 from a thin triangle on that edge is one.)
 TEST(CoverBound, NoBoundWhereTheSourcesLeaveAGap) {
     const std::array<Vec3, 3> q{Vec3{-0.3, -0.2, 0.001}, Vec3{0.4, -0.1, 0.002}, Vec3{0.0, 0.35, 0.003}};
+    const double goal = 0.1;
     {
         const TriangleMesh B = rim_fan(200);
         const MeshGrid g(B);
-        ASSERT_LT(bound_of(g, q), 1.0);
-        EXPECT_EQ(bound_of(g, {q[0], q[1], Vec3{0.0, 1.02, 0.003}}), HUGE_VAL);  // a corner past the rim
+        ASSERT_LT(bound_of(g, q, goal), goal);
+        EXPECT_EQ(bound_of(g, {q[0], q[1], Vec3{0.0, 1.02, 0.003}}, goal), HUGE_VAL);  // a corner past the rim
     }
     // The fan's triangle 100 runs from vertex 0 at (1, 0) to the far side, across the middle.
     const TriangleMesh B = rim_fan(200, 100);
     const MeshGrid g(B);
-    EXPECT_EQ(bound_of(g, q), HUGE_VAL);
+    EXPECT_EQ(bound_of(g, q, goal), HUGE_VAL);
 }
 
 // Two triangulations of one square overlap: no edge but the two diagonals has triangles on both
@@ -264,4 +267,66 @@ TEST(CoverBound, APieceIsSeenAlongItsTargetsNormal) {
     EXPECT_LE(b, 1e-13);
     for (const Vec3& x : piece) EXPECT_GE(b + slack, brute_distance(o + x, B) - 1e-15);
     EXPECT_EQ(cover_bound(g, o, piece, goal, slack), HUGE_VAL) << "the piece's own normal is good enough: the test means nothing";
+}
+
+// A strip 0.0112 high and 1e5 long, fanned from one corner (generate_pairs6.py "sliver_strip"
+// 63741): the middle triangle, 9 28 29, is 0.015 wide at its top and 8e4 long, so where q crosses
+// it, it is 1e-9 thin, below the projected corners' rounding seen from o, 1.9e5 away (its doubled
+// area 1.7e-4, where a few ulps of the corners' magnitude times its edges is 4.3e-4). Its
+// orientation is still certain from its normal (the edges' cross product, 1.7e-4 against its
+// rounding, a few ulps of their product, 6.4e9: 1e-6). Left out, it left a gap between its two
+// neighbours, whose edges then bounded their union across q. q lies in the strip's plane: d = 0
+// over it, and the bound is the rounding strip along q's sides (2^-46 of 1.9e5 over the sine of
+// half its sharpest angle, 0.2), under the goal of 1e-6 of the real pair's tolerance.
+TEST(CoverBound, ASliverThinnerThanItsRoundingStillJoinsItsNeighbours) {
+    const double H = 1540096.0 - 1540095.9888099348;
+    const double x9 = -270812.5409335791, x10 = -355961.57222346356;
+    const double x27 = -334159.2176228259, x28 = -350890.86722086696, x29 = -350890.8823553009;
+    const std::vector<Vec3> p{{x9, 0, 0}, {x10, 0, 0}, {x27, H, 0}, {x28, H, 0}, {x29, H, 0}};
+    const Vec3 o{-163840.0, 0, 0};
+    // q around the sliver's middle, where its sides run at y = H / 2 (to 1e-9 over q), below the
+    // union's side 9 27, at y = 0.63 H there.
+    const double xs = 0.5 * (x9 + 0.5 * (x28 + x29));
+    const std::array<Vec3, 3> q{Vec3{xs - 0.01, 0.35 * H, 0} - o, Vec3{xs + 0.01, 0.35 * H, 0} - o, Vec3{xs, 0.6 * H, 0} - o};
+    const double goal = 1e-6;
+    {
+        const TriangleMesh B = mesh_of(p, {{0, 3, 2}, {0, 4, 3}, {0, 1, 4}});
+        const MeshGrid g(B);
+        double slack = 0;
+        const double b = cover_bound(g, o, q, goal, slack);
+        EXPECT_LE(b, 2e-8);
+        EXPECT_LE(slack, 5e-8);  // 512 ulps of the corners' magnitude, 1.9e5
+        EXPECT_GE(b + slack, sampled_max({o + q[0], o + q[1], o + q[2]}, B));
+    }
+    // Without the sliver, its neighbours leave a gap 1e-9 wide across q: no bound.
+    const TriangleMesh B = mesh_of(p, {{0, 3, 2}, {0, 1, 4}});
+    const MeshGrid g(B);
+    double slack = 0;
+    EXPECT_EQ(cover_bound(g, o, q, goal, slack), HUGE_VAL);
+}
+
+// Sources in z = 0 fanned from (0, -0.011): a needle 2e-10 wide at y = 0.0005 between two
+// well-shaped triangles (generate_pairs6.py "sliver_strip" 65109). The target is a needle along x,
+// 1e-9 wide, one corner 1e-18 above the plane (a corner's rounding): its plane is tilted 1e-9 rad
+// about x. q, a piece of it 2e-12 high, is seen along that normal (and its own, the same): the
+// needle source's corners, 0.011 away along y, seem 1.1e-11 off q, above the goal of 5e-12, and
+// the needle's own plane is no better known, so it is left out and its neighbours' edges bound
+// the union across q. Seen along a well-shaped neighbour's normal (the thin bound), every source
+// is within rounding of q, and the bound is q's height (a point of q lies within it of q's
+// longest edge), 2e-12.
+TEST(CoverBound, APieceThinnerThanTheGoalIsSeenAlongAWellShapedSourcesNormal) {
+    const std::vector<Vec3> p{{0, -0.011, 0}, {-1e-10, 0.0005, 0}, {1e-10, 0.0005, 0}, {-0.01, 0.0005, 0}, {0.01, 0.0005, 0}};
+    const TriangleMesh B = mesh_of(p, {{0, 1, 3}, {0, 2, 1}, {0, 4, 2}});
+    const MeshGrid g(B);
+    const Vec3 o{-0.005, 0, 0};
+    const std::array<Vec3, 3> whole{Vec3{0, 0, 0}, Vec3{0.01, 0, 0}, Vec3{0.01, 1e-9, 1e-18}};
+    const auto at = [&](double x, double y) { return Vec3{x, y, y * 1e-9} - o; };  // on the target's plane
+    const std::array<Vec3, 3> q{at(-5e-10, 1e-12), at(5e-10, 1e-12), at(0, 3e-12)};
+    const double goal = 5e-12;
+    double slack = 0;
+    const double b = cover_bound(g, o, q, goal, slack, &whole);
+    EXPECT_GE(b, 2e-12 * (1 - 1e-6));
+    EXPECT_LE(b, goal);
+    EXPECT_LE(slack, 1e-14);  // 512 ulps of the corners' magnitude, 0.015
+    EXPECT_GE(b + slack, sampled_max({o + q[0], o + q[1], o + q[2]}, B));
 }
