@@ -437,8 +437,15 @@ double edge_bound(const MeshGrid& g, const Target& tg, double L, double tol, siz
         heap.pop_back();
         const Vec3 p0 = a + s.s0 * e, p1 = a + s.s1 * e, m = a + (0.5 * (s.s0 + s.s1)) * e;
         const double half = 0.5 * norm(p1 - p0) * (1 + 1e-12);
+        // Far from the origin, the middle's nearest triangle is taken relative to the target's
+        // corner (exact_distance): the one nearest the rounded world point may be off the exact
+        // point's by the rounding, and so was every bound of a segment at a ridge (generate_pairs9.py
+        // "sliver_tiny_on_edge" 20192: a segment target 2.4e-4 long 1.3e7 from the origin, y
+        // rounded to 7e-12; the segments left had bounds 2.5e-12 above the distance, 1e-8 of the
+        // diagonal).
         uint32_t near = s.near0;
-        const double dm = measure(g, tg, m, near);
+        double err = 0;
+        const double dm = tg.precise ? exact_distance(g, tg, m, near, err) : measure(g, tg, m, near);
         double slack = 0x1p-46 * tg.size, u = dm + half;
         slack = std::max(slack, rounding(tg.size, dm, relative(g.mesh(), near, tg.o)));
         for (const uint32_t c : {near, s.near0, s.near1}) {

@@ -36,6 +36,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "point_triangle.h"
@@ -143,17 +144,31 @@ double along_normal(const std::vector<Vec3>& xs, const std::array<Vec3, 3>& S, c
 
 // Whether the orientation of the triangle c (input corners) seen along the unit vector n is
 // certain from its normal, where its projection is thinner than the projected corners' rounding
-// (generate_pairs6.py "sliver_strip" 63741: a sliver of A 1.5e-2 wide at one end and 1.6e5 long,
+// (generate_pairs6.py "sliver_strip" 63741: a sliver of A 1.5e-2 wide at one end and 8e4 long,
 // 2e5 from the target's corner, between two triangles of a coplanar strip: left out, it left a gap
 // in their union, and the sliver target over it stayed open, its interval 5.8e-9 of the diagonal).
-// The edges are input differences (one rounding each) and their cross product is off by a few
-// ulps of their product (with its component along n: under 16 ulps, n's and q's projection's own
-// rounding included): the sign of that component is certain where it is above 2^-48 of the
-// product, twice that. S not steep to n, as elsewhere. `orient`: +1 counter-clockwise.
+// In long double: the edges (input differences, off by an ulp at most), each component of their
+// cross product (off by 4 ulps of its two products' magnitudes at most) and its component along n
+// (off by that along n, and 3 ulps of its terms); its sign is certain where it is above twice
+// that bound (65541: a sliver 9.4e-12 wide and 12.8 long, its cross product 4.6e-13, where a few
+// ulps of the edges' product, 163, was 5.8e-13; its two products, 0.63 each, cancel exactly). S
+// not steep to n, as elsewhere. `orient`: +1 counter-clockwise.
 bool facing(const std::array<Vec3, 3>& c, const Vec3& n, int& orient) {
-    const Vec3 a = c[1] - c[0], b = c[2] - c[0], ns = cross(a, b);
-    const double along = dot(ns, n);
-    if (!(std::fabs(along) >= kSteep * norm(ns) && std::fabs(along) > 0x1p-48 * norm(a) * norm(b))) return false;
+    using LD = long double;
+    const LD u = std::numeric_limits<LD>::epsilon();
+    LD a[3], b[3];
+    for (int i = 0; i < 3; ++i) a[i] = (LD)c[1][i] - c[0][i], b[i] = (LD)c[2][i] - c[0][i];
+    LD along = 0, err = 0, terms = 0, len2 = 0;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3, k = (i + 2) % 3;
+        const LD ns = a[j] * b[k] - a[k] * b[j];
+        along += n[i] * ns;
+        err += std::fabs((LD)n[i]) * 4 * u * (std::fabs(a[j] * b[k]) + std::fabs(a[k] * b[j]));
+        terms += std::fabs(n[i] * ns);
+        len2 += ns * ns;
+    }
+    err += 3 * u * terms;
+    if (!(std::fabs(along) >= kSteep * std::sqrt(len2) && std::fabs(along) > 2 * err)) return false;
     orient = along > 0 ? 1 : -1;
     return true;
 }

@@ -330,3 +330,35 @@ TEST(CoverBound, APieceThinnerThanTheGoalIsSeenAlongAWellShapedSourcesNormal) {
     EXPECT_LE(slack, 1e-14);  // 512 ulps of the corners' magnitude, 0.015
     EXPECT_GE(b + slack, sampled_max({o + q[0], o + q[1], o + q[2]}, B));
 }
+
+// A fan in the plane x = 0 from the origin to points along y = -0.049 (generate_pairs6.py
+// "sliver_strip" 65541): its second triangle is a sliver 9.4e-12 wide at its base and 12.8 long.
+// Its projection is below its rounding (doubled area 4.6e-13, a few ulps of its corners' magnitude
+// times its edges 4.6e-12), and so is a few ulps of its edges' product, 163; but its normal's
+// component along x is a difference of two products of 0.63 each, off by a few ulps of those,
+// 1e-16: its orientation is certain, and it joins its neighbours. q lies in the fan's plane, so
+// d = 0 over it; the bound is the rounding strip along its sides (2^-46 of 12.8 over the sine of
+// half its sharpest angle, 0.05).
+TEST(CoverBound, ASliverIsOrientedByItsNormalsOwnRounding) {
+    const double y = -0.04925754008876261;
+    const std::vector<Vec3> p{{0, 0, 0}, {0, y, 0}, {0, y, 12.768302425705942}, {0, y, 12.76830242571532}, {0, y, 12.768339388113969},
+                              {0, y, 14.737599864705965}};
+    const Vec3 o{0, 0, 0};
+    const double zs = 12.768302425705942 * (0.0492 / -y);  // the sliver's sides at y = -0.0492
+    const std::array<Vec3, 3> q{Vec3{0, -0.0492, zs - 1e-3}, Vec3{0, -0.0492, zs + 1e-3}, Vec3{0, -0.0491, zs}};
+    const double goal = 1e-9;
+    {
+        const TriangleMesh B = mesh_of(p, {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}});
+        const MeshGrid g(B);
+        double slack = 0;
+        const double b = cover_bound(g, o, q, goal, slack);
+        EXPECT_LE(b, 1e-11);
+        EXPECT_LE(slack, 1e-11);  // 512 ulps of the corners' magnitude, 14.7
+        EXPECT_GE(b + slack, sampled_max(q, B));
+    }
+    // Without the sliver, its neighbours leave a gap 9e-12 wide across q: no bound.
+    const TriangleMesh B = mesh_of(p, {{0, 2, 1}, {0, 4, 3}, {0, 5, 4}});
+    const MeshGrid g(B);
+    double slack = 0;
+    EXPECT_EQ(cover_bound(g, o, q, goal, slack), HUGE_VAL);
+}

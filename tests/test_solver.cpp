@@ -782,3 +782,59 @@ TEST(ConfirmTop, LongestEdgeBoundAddsTheHeight) {
         EXPECT_LE(bound, truth + 2 * tol + 1e-15 * coord);
     }
 }
+
+// A segment target 2.4e-4 long 1.3e7 from the origin among 13 tiny triangles of B, some of them
+// slivers (generate_pairs9.py "sliver_tiny_on_edge" 20192). Its largest distance lies on a ridge
+// between two of them, 4.9e-5 away. A world point there is rounded to 7e-12 (an ulp of y), which
+// may put it past the ridge: the triangle nearest the rounded point was then taken for every
+// segment near the ridge, its distance 2.5e-12 above the other's at the exact points, a hundred
+// times the tolerance, and the bound stayed that far above the distance. Oracle: the largest
+// brute-force distance (relative to the target's corner: the rounding of the distances, not of
+// the coordinates) over samples refined round the best, a lower bound of the truth.
+TEST(ConfirmTop, LongestEdgeBoundFarFromTheOriginTakesTheExactNearestTriangle) {
+    const TriangleMesh B = make_mesh(
+        {{12763136, 42368.000122070312, 0.0007019042932648338}, {12763136, 42368.000122070312,
+        0.00070190429326492628}, {12763136, 42368.000122070305, 0.00070190429326484529}, {12763135.999999998,
+        42368.000000000247, 0.00070190615952014923}, {12763135.999999998, 42367.999999998385, 0.00070190615952014923},
+        {12763135.999999998, 42368.00000000211, 0.000701904296875}, {12763136, 42368.000131706838, 0.000701904296875},
+        {12763136, 42368.000131706889, 0.00070190416640455598}, {12763136, 42368.000131706824,
+        0.00070190433740742269}, {12763136, 42368.000070053182, 0.000701904296875}, {12763136, 42368.000070053182,
+        0.00070190429687563448}, {12763136, 42368.000070053182, 0.00070190429687539313}, {12763136,
+        42368.000122070312, 0.000701904296875}, {12763136, 42368.000146996739, 0.00070190429368761171}, {12763136,
+        42368.000146996754, 0.0007019042951835634}, {12763136, 42368.000146996754, 0.00070190429708127174}, {12763136,
+        42368.000070053182, 0.00070190429687502179}, {12763136, 42368.000244140378, 0.000701904298598161},
+        {12763135.999999998, 42368.00024413479, 0.00070190057330786254}, {12763135.999999996, 42368.000244129202,
+        0.00070189684801756408}, {12763136, 42368.0000973059, 0.00070190428334136344}, {12763136.000000015,
+        42368.000244133174, 0.00070189498364925385}, {12763135.999999985, 42368.000244127586, 0.00070190615952014923},
+        {12763135.999999994, 42368.000244135037, 0.00070191919803619385}, {12763136, 42368.000122070312,
+        0.00070190429754543788}, {12763136, 42368.000244140625, 0.000701904296875}, {12763135.999999994,
+        42368.000244140625, 0.00070190243422985077}, {12763136.000000007, 42368.000070055044, 0.000701904296875},
+        {12763135.999999994, 42368.000070051319, 0.00070189684629440308}, {12763135.999999998, 42368.000070056907,
+        0.00070190615952014923}},
+        {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}, {9, 10, 11}, {12, 12, 12}, {13, 14, 15}, {16, 16, 16}, {17, 18, 19}, {20,
+        20, 20}, {21, 22, 23}, {24, 24, 24}, {25, 25, 26}, {27, 28, 29}});
+    const MeshGrid g(B);
+    const std::array<Vec3, 3> segment{Vec3{12763136, 42368, 0.000701904296875}, Vec3{12763136, 42368.000244140625, 0.000701904296875},
+                                      Vec3{12763136, 42368.000070053182, 0.000701904296875}};
+    const Vec3 o = segment[0], e = segment[1] - segment[0];
+    const auto d = [&](double s) {  // brute force, relative to o
+        double best = HUGE_VAL;
+        for (uint32_t t = 0; t < B.num_triangles(); ++t) {
+            const auto c = B.corners(t);
+            best = std::min(best, closest_point_on_triangle(s * e, c[0] - o, c[1] - o, c[2] - o).dist2);
+        }
+        return std::sqrt(best);
+    };
+    double at = 0, lower = -1;
+    for (int k = 0; k <= 1000; ++k)
+        if (d(k / 1000.0) > lower) lower = d(k / 1000.0), at = k / 1000.0;
+    for (double step = 1e-3 / 8; step > 1e-15; step /= 8) {  // 17 samples round the best, finer each time
+        const double from = at;
+        for (int k = -8; k <= 8; ++k)
+            if (const double s = from + k * step; s >= 0 && s <= 1 && d(s) > lower) lower = d(s), at = s;
+    }
+    const double tol = 1e-10 * norm(e);
+    const double bound = longest_edge_bound(g, segment, lower, tol, 12763136);
+    EXPECT_GE(bound, lower);
+    EXPECT_LE(bound, lower + 4 * tol) << "above the sampled distance by " << bound - lower;
+}
