@@ -16,7 +16,9 @@ namespace hlens {
 // their distances along the normal over the parts of q they cover, plus the strip's width.
 // `slack` becomes the bound's rounding (it is not in the returned value). `whole`: the triangle q is
 // a piece of (relative to o), whose normal is usually known better than q's: q is seen along it
-// first, and along its own normal where that does not close it.
+// first, and along its own normal where that does not close it; then, where q is too thin for
+// those normals or thinner than the goal, along a well-shaped source's normal, over a thin
+// triangle on its longest edge, plus its height.
 double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, double goal, double& slack,
                    const std::array<Vec3, 3>* whole = nullptr);
 
