@@ -37,6 +37,14 @@ double bound_of(const MeshGrid& g, const std::array<Vec3, 3>& q, double goal = 1
     return b;
 }
 
+// cover_bound over q (relative to o) from the mesh of corners p and triangles t.
+double bound_over(const std::vector<Vec3>& p, const std::vector<Tri>& t, const Vec3& o, const std::array<Vec3, 3>& q, double goal,
+                  double& slack) {
+    const TriangleMesh B = mesh_of(p, t);
+    const MeshGrid g(B);
+    return cover_bound(g, o, q, goal, slack);
+}
+
 // The largest brute-force distance to B over a barycentric grid of q (41 points a side).
 double sampled_max(const std::array<Vec3, 3>& q, const TriangleMesh& B) {
     double truth = 0;
@@ -289,20 +297,14 @@ TEST(CoverBound, ASliverThinnerThanItsRoundingStillJoinsItsNeighbours) {
     const double xs = 0.5 * (x9 + 0.5 * (x28 + x29));
     const std::array<Vec3, 3> q{Vec3{xs - 0.01, 0.35 * H, 0} - o, Vec3{xs + 0.01, 0.35 * H, 0} - o, Vec3{xs, 0.6 * H, 0} - o};
     const double goal = 1e-6;
-    {
-        const TriangleMesh B = mesh_of(p, {{0, 3, 2}, {0, 4, 3}, {0, 1, 4}});
-        const MeshGrid g(B);
-        double slack = 0;
-        const double b = cover_bound(g, o, q, goal, slack);
-        EXPECT_LE(b, 2e-8);
-        EXPECT_LE(slack, 5e-8);  // 512 ulps of the corners' magnitude, 1.9e5
-        EXPECT_GE(b + slack, sampled_max({o + q[0], o + q[1], o + q[2]}, B));
-    }
-    // Without the sliver, its neighbours leave a gap 1e-9 wide across q: no bound.
-    const TriangleMesh B = mesh_of(p, {{0, 3, 2}, {0, 1, 4}});
-    const MeshGrid g(B);
+    const std::vector<Tri> fan{{0, 3, 2}, {0, 4, 3}, {0, 1, 4}};
     double slack = 0;
-    EXPECT_EQ(cover_bound(g, o, q, goal, slack), HUGE_VAL);
+    const double b = bound_over(p, fan, o, q, goal, slack);
+    EXPECT_LE(b, 2e-8);
+    EXPECT_LE(slack, 5e-8);  // 512 ulps of the corners' magnitude, 1.9e5
+    EXPECT_GE(b + slack, sampled_max({o + q[0], o + q[1], o + q[2]}, mesh_of(p, fan)));
+    // Without the sliver, its neighbours leave a gap 1e-9 wide across q: no bound.
+    EXPECT_EQ(bound_over(p, {fan[0], fan[2]}, o, q, goal, slack), HUGE_VAL);
 }
 
 // Sources in z = 0 fanned from (0, -0.011): a needle 2e-10 wide at y = 0.0005 between two
@@ -347,18 +349,12 @@ TEST(CoverBound, ASliverIsOrientedByItsNormalsOwnRounding) {
     const double zs = 12.768302425705942 * (0.0492 / -y);  // the sliver's sides at y = -0.0492
     const std::array<Vec3, 3> q{Vec3{0, -0.0492, zs - 1e-3}, Vec3{0, -0.0492, zs + 1e-3}, Vec3{0, -0.0491, zs}};
     const double goal = 1e-9;
-    {
-        const TriangleMesh B = mesh_of(p, {{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}});
-        const MeshGrid g(B);
-        double slack = 0;
-        const double b = cover_bound(g, o, q, goal, slack);
-        EXPECT_LE(b, 1e-11);
-        EXPECT_LE(slack, 1e-11);  // 512 ulps of the corners' magnitude, 14.7
-        EXPECT_GE(b + slack, sampled_max(q, B));
-    }
-    // Without the sliver, its neighbours leave a gap 9e-12 wide across q: no bound.
-    const TriangleMesh B = mesh_of(p, {{0, 2, 1}, {0, 4, 3}, {0, 5, 4}});
-    const MeshGrid g(B);
+    const std::vector<Tri> fan{{0, 2, 1}, {0, 3, 2}, {0, 4, 3}, {0, 5, 4}};
     double slack = 0;
-    EXPECT_EQ(cover_bound(g, o, q, goal, slack), HUGE_VAL);
+    const double b = bound_over(p, fan, o, q, goal, slack);
+    EXPECT_LE(b, 1e-11);
+    EXPECT_LE(slack, 1e-11);  // 512 ulps of the corners' magnitude, 14.7
+    EXPECT_GE(b + slack, sampled_max(q, mesh_of(p, fan)));
+    // Without the sliver, its neighbours leave a gap 9e-12 wide across q: no bound.
+    EXPECT_EQ(bound_over(p, {fan[0], fan[2], fan[3]}, o, q, goal, slack), HUGE_VAL);
 }

@@ -817,21 +817,16 @@ TEST(ConfirmTop, LongestEdgeBoundFarFromTheOriginTakesTheExactNearestTriangle) {
     const std::array<Vec3, 3> segment{Vec3{12763136, 42368, 0.000701904296875}, Vec3{12763136, 42368.000244140625, 0.000701904296875},
                                       Vec3{12763136, 42368.000070053182, 0.000701904296875}};
     const Vec3 o = segment[0], e = segment[1] - segment[0];
-    const auto d = [&](double s) {  // brute force, relative to o
-        double best = HUGE_VAL;
-        for (uint32_t t = 0; t < B.num_triangles(); ++t) {
-            const auto c = B.corners(t);
-            best = std::min(best, closest_point_on_triangle(s * e, c[0] - o, c[1] - o, c[2] - o).dist2);
-        }
-        return std::sqrt(best);
-    };
+    const TriangleMesh B_o = shifted(B, -1.0 * o);  // B relative to o
     double at = 0, lower = -1;
-    for (int k = 0; k <= 1000; ++k)
-        if (d(k / 1000.0) > lower) lower = d(k / 1000.0), at = k / 1000.0;
+    const auto sample = [&](double s) {
+        if (const double v = brute_distance(s * e, B_o); v > lower) lower = v, at = s;
+    };
+    for (int k = 0; k <= 1000; ++k) sample(k / 1000.0);
     for (double step = 1e-3 / 8; step > 1e-15; step /= 8) {  // 17 samples round the best, finer each time
         const double from = at;
         for (int k = -8; k <= 8; ++k)
-            if (const double s = from + k * step; s >= 0 && s <= 1 && d(s) > lower) lower = d(s), at = s;
+            if (const double s = from + k * step; s >= 0 && s <= 1) sample(s);
     }
     const double tol = 1e-10 * norm(e);
     const double bound = longest_edge_bound(g, segment, lower, tol, 12763136);
