@@ -20,6 +20,11 @@
 //     other kept triangles; else it is tested: such cases are only left to the subdivision. Which
 //     side a triangle lies on must be certain: from its projection, or, for a sliver thinner
 //     than the projection's rounding, from its normal (facing);
+//   - where a boundary of U crosses K, it may be a crack narrower than the goal (two corners of B
+//     a rounding apart where one was meant): the kept triangles grown by w then cover K, each
+//     point of K within 1.5 w of U, and the bound adds that (cracks_closed);
+//   - a long source S is bounded over its part over q (S clipped to the prism along n over q),
+//     not its far corners, where those seem off q by the tilt of n (along_normal_near);
 //   - the strip of q outside K is within delta of K but near a corner of angle a, where K's corner
 //     lies delta / sin(a / 2) inside, and d is 1-Lipschitz: the bound over q is max b_S plus that;
 //   - at a needle's tip that is large (5e-7 of the coordinates for an angle of 3e-8), and the tip's
@@ -125,6 +130,53 @@ void grown_half_planes(std::array<Vec2, 3> s, double grow, std::vector<HalfPlane
     for (int k = 0; k < 3; ++k) out[k] = HalfPlane{m[k], dot(m[k], s[k]) - grow};
 }
 
+// The triangle s (either orientation) grown by w: its edges moved out by w, and each corner sharper
+// than a right angle cut across its bisector at w from it; every point lies within sqrt(2) w of s
+// (at a cut corner of angle a, the hexagon's corners lie w / cos(pi / 4 - a / 4) from s's; at
+// another, w / sin(a / 2)). As half-planes and as corners (counter-clockwise).
+void grown_hexagon(std::array<Vec2, 3> s, double w, std::vector<HalfPlane>& planes, std::vector<Vec2>& corners,
+                   std::vector<Vec2>& tmp) {
+    s = ccw(s);
+    const std::array<Vec2, 3> m = inward(s);
+    planes.clear();
+    Vec2 lo = s[0], hi = s[0];
+    for (int k = 0; k < 3; ++k) {
+        planes.push_back(HalfPlane{m[k], dot(m[k], s[k]) - w});
+        const Vec2 u = s[(k + 1) % 3] - s[k], v = s[(k + 2) % 3] - s[k];
+        const Vec2 b = u / norm(u) + v / norm(v);
+        if (dot(u, v) > 0) planes.push_back(HalfPlane{b / norm(b), dot(b, s[k]) / norm(b) - w});
+        lo = {std::min(lo.x, s[k].x), std::min(lo.y, s[k].y)}, hi = {std::max(hi.x, s[k].x), std::max(hi.y, s[k].y)};
+    }
+    lo = lo - Vec2{2 * w, 2 * w}, hi = hi + Vec2{2 * w, 2 * w};
+    corners = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+    clip_convex_in_place(corners, planes, tmp);
+}
+
+// Whether the part [t0, t1] of the segment [a, b] lies in the union of the convex polygons `hexes`
+// (as half-planes), each shrunk by delta (covered's test for triangles grown by a crack's width).
+bool covered_by(const Vec2& a, const Vec2& b, double t0, double t1, const std::vector<std::vector<HalfPlane>>& hexes,
+                double delta) {
+    std::vector<std::pair<double, double>> in;
+    for (const std::vector<HalfPlane>& h : hexes) {
+        double s0 = 0, s1 = 1;
+        for (const HalfPlane& p : h) {
+            const double fa = dot(p.n, a) - p.offset - delta, fb = dot(p.n, b) - p.offset - delta;
+            if (fa < 0 && fb < 0) s0 = 2;
+            if (fa < 0 && fb >= 0) s0 = std::max(s0, fa / (fa - fb));
+            if (fb < 0 && fa >= 0) s1 = std::min(s1, fa / (fa - fb));
+        }
+        if (s0 <= s1) in.push_back({s0, s1});
+    }
+    std::sort(in.begin(), in.end());
+    double reached = t0;
+    for (const auto& [s0, s1] : in) {
+        if (s0 > reached) break;
+        reached = std::max(reached, s1);
+        if (reached >= t1) return true;
+    }
+    return false;
+}
+
 // How far along n a point x of q is from S where its line meets S, at most, over the points xs: by
 // S's plane, h_S(x) / |n.n_S| (linear: largest at a corner of their hull), the normal's rounding
 // (an angle of a few ulps of the edges' product over |cross|, large for a sliver) allowed for; or,
@@ -140,6 +192,36 @@ double along_normal(const std::vector<Vec3>& xs, const std::array<Vec3, 3>& S, c
         for (const Vec3& c : S) by_corners = std::max(by_corners, std::fabs(dot(x - c, n)));
     }
     return std::min(by_plane, by_corners);
+}
+
+// The same spread over the part of S that lines along n through q meet, where S reaches far past
+// q: the corners ys of S clipped to the prism along n over q's projection pq (counter-clockwise,
+// inward unit normals m), grown by `grow` (more than the projections' rounding, so that it holds
+// the exact part; the clipped corners are off S by a few ulps of their magnitude, as S's own).
+// Seen along a normal tilted by rounding, a needle source's far corners seem that tilt times their
+// reach off q, and its own plane is no better known (generate_pairs11.py "slivers_strip" 20287,
+// A to B: a needle of B 1 long and 6.9e-9 wide, pieces 3e-6 across; its far corners seemed 1e-8
+// off q where the goal was 8e-11, and the target stayed open, its interval 1.1e-6 of the diagonal).
+double along_normal_near(const std::vector<Vec3>& xs, const std::array<Vec3, 3>& S, const Vec3& n, const Vec3& e1,
+                         const Vec3& e2, const std::array<Vec2, 3>& pq, const std::array<Vec2, 3>& m, double grow,
+                         std::vector<Vec3>& ys, std::vector<Vec3>& tmp) {
+    ys.assign(S.begin(), S.end());
+    for (int i = 0; i < 3 && !ys.empty(); ++i) {
+        auto f = [&](const Vec3& y) { return dot(Vec2{dot(y, e1), dot(y, e2)} - pq[i], m[i]) + grow; };
+        tmp.clear();
+        for (size_t k = 0; k < ys.size(); ++k) {
+            const Vec3 &a = ys[k], &b = ys[(k + 1) % ys.size()];
+            const double fa = f(a), fb = f(b);
+            if (fa >= 0) tmp.push_back(a);
+            if ((fa >= 0) != (fb >= 0)) tmp.push_back(a + (fa / (fa - fb)) * (b - a));
+        }
+        ys.swap(tmp);
+    }
+    if (ys.empty()) return HUGE_VAL;  // only by rounding: S's part was found to meet q's
+    double spread = 0;
+    for (const Vec3& x : xs)
+        for (const Vec3& y : ys) spread = std::max(spread, std::fabs(dot(x - y, n)));
+    return spread;
 }
 
 // Whether the orientation of the triangle c (input corners) seen along the unit vector n is
@@ -205,7 +287,8 @@ double tip_bound(const std::vector<uint32_t>& near, const TriangleMesh& B, const
     return best;
 }
 
-double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, Vec3 n, double goal, double& slack);
+double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, Vec3 n, double goal, double& slack,
+                      double crack = 0);
 
 // q too thin for its own normal (a segment where a degenerate target's corners coincide, or a
 // needle whose normal's rounding, over its length, reaches the goal): bounded over the triangle
@@ -294,10 +377,74 @@ double cover_bound(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& 
 
 namespace {
 
+// Whether no boundary of U (the kept triangles' projections, with their edges `sides`) meets K
+// (q's projection pq shrunk by delta; m: its inward normals): each edge has kept triangles on
+// both its sides, or lies outside K, or inside other kept triangles there. Else `open` is one that
+// does not.
+bool edges_inside(std::vector<Side>& sides, const std::vector<std::array<Vec2, 3>>& kept, const std::array<Vec2, 3>& pq,
+                  const std::array<Vec2, 3>& m, double delta, Side& open) {
+    std::sort(sides.begin(), sides.end());
+    for (size_t i = 0, j; i < sides.size(); i = j) {
+        bool left = false, right = false;
+        for (j = i; j < sides.size() && sides[j].a == sides[i].a && sides[j].b == sides[i].b; ++j)
+            (sides[j].side > 0 ? left : right) = true;
+        if (left && right) continue;  // inside U
+        for (size_t k = i; k < j; ++k) {
+            double t0, t1;
+            if (clip(sides[k].pa, sides[k].pb, pq, m, delta, t0, t1) && !covered(sides[k].pa, sides[k].pb, t0, t1, kept, delta)) {
+                open = sides[k];
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+// Whether the union of the kept triangles grown by `reach` may cover K beyond the edge `open`
+// (a boundary of their union through K): false where the point 2 reach past its part in K's middle
+// lies in K and in none of them (then the triangles grown by less, cracks_closed's, leave it out:
+// a gap, not a crack; on real pairs, most often where the sources steep to n are left out).
+bool crack_beside(const Side& open, const std::vector<std::array<Vec2, 3>>& kept, const std::array<Vec2, 3>& pq,
+                  const std::array<Vec2, 3>& m, double delta, double reach) {
+    double t0, t1;
+    if (!clip(open.pa, open.pb, pq, m, delta, t0, t1)) return true;
+    const Vec2 d = open.pb - open.pa;
+    const Vec2 x = open.pa + (0.5 * (t0 + t1)) * d - (open.side * 2 * reach / norm(d)) * Vec2{-d.y, d.x};
+    if (!inside(x, pq, delta)) return true;
+    for (const std::array<Vec2, 3>& k : kept)
+        if (inside(x, k, -reach)) return true;
+    return false;
+}
+
+// Whether K (q's projection pq shrunk by delta; m: its inward normals) lies in the union of the
+// kept triangles each grown by `crack` (grown_hexagon): the union's boundary lies on the hexagons'
+// edges, and an edge's part in K inside another hexagon (shrunk by delta) is not on it. A kept
+// sliver thinner than its projection's rounding is left out (its edges' directions are noise):
+// the union only shrinks. K's centroid lies in the union (tested by the caller on the triangles).
+bool cracks_closed(const std::vector<std::array<Vec2, 3>>& kept, const std::vector<bool>& projected, double crack,
+                   const std::array<Vec2, 3>& pq, const std::array<Vec2, 3>& m, double delta) {
+    std::vector<std::vector<HalfPlane>> hexes;
+    std::vector<std::vector<Vec2>> corners;
+    std::vector<Vec2> tmp;
+    for (size_t i = 0; i < kept.size(); ++i) {
+        if (!projected[i]) continue;
+        hexes.emplace_back(), corners.emplace_back();
+        grown_hexagon(kept[i], crack, hexes.back(), corners.back(), tmp);
+    }
+    for (const std::vector<Vec2>& c : corners)
+        for (size_t k = 0; k < c.size(); ++k) {
+            const Vec2 &a = c[k], &b = c[(k + 1) % c.size()];
+            double t0, t1;
+            if (clip(a, b, pq, m, delta, t0, t1) && !covered_by(a, b, t0, t1, hexes, delta)) return false;
+        }
+    return true;
+}
+
 // q seen along the unit vector n (its normal, or thin_cover_bound's): the bound is taken over the
 // plane through q[0] normal to n, each point of q lying on the line along n of its projection
 // there, within `tilt` of it (0 but for rounding where n is q's normal).
-double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, Vec3 n, double goal, double& slack) {
+double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3>& q, Vec3 n, double goal, double& slack,
+                      double crack) {
     const TriangleMesh& B = g.mesh();
     Vec3 e1 = (q[1] - q[0]) - dot(q[1] - q[0], n) * n;
     const double l1 = norm(e1);
@@ -316,10 +463,13 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
     const std::vector<uint32_t> near = triangles_near(g, o, q);
 
     std::vector<std::array<Vec2, 3>> kept;
+    std::vector<bool> kept_projected;
     std::vector<Side> sides;
     std::vector<HalfPlane> planes;
     std::vector<Vec2> part, tmp;
-    std::vector<Vec3> xs;
+    std::vector<Vec3> xs, ys, tmp3;
+    const std::array<Vec2, 3> mq = inward(pq);
+    const double reach = 1.5 * crack;  // a triangle grown by the crack's width, its points' distance (grown_hexagon)
     double bound = -HUGE_VAL;
     for (uint32_t t : near) {
         const auto c = B.corners(t);
@@ -346,18 +496,27 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
         // misses q has no edge through q's shrunk part either. Where S's projection is thinner
         // than its rounding, the part is not known: all of q is taken (a larger bound).
         part.assign(pq.begin(), pq.end());
+        const double grow = 0x1p-46 * std::max(M, m);  // more than the projections' rounding
+        if (reach > 0) {  // q's part within S, q grown by reach (the points a crack's width away)
+            const double r = 2 * (reach + grow);
+            part = {lo - Vec2{r, r}, {hi.x + r, lo.y - r}, hi + Vec2{r, r}, {lo.x - r, hi.y + r}};
+            grown_half_planes(pq, reach + grow, planes);
+            clip_convex_in_place(part, planes, tmp);
+        }
         if (projected) {
-            grown_half_planes(ps, 0x1p-46 * std::max(M, m), planes);
+            grown_half_planes(ps, grow, planes);
             clip_convex_in_place(part, planes, tmp);
             if (part.empty()) continue;
         }
         xs.clear();
         for (const Vec2& x : part) xs.push_back(q[0] + (x.x - pq[0].x) * e1 + (x.y - pq[0].y) * e2);
-        const double b = along_normal(xs, S, n, ns, ls, cosine);
+        double b = along_normal(xs, S, n, ns, ls, cosine);
+        if (!(b <= goal)) b = std::min(b, along_normal_near(xs, S, n, e1, e2, pq, mq, grow + reach, ys, tmp3));
         if (!(b <= goal)) continue;
         bound = std::max(bound, b);
         M = std::max(M, m);
         kept.push_back(ps);
+        kept_projected.push_back(projected);
         const Tri& f = B.triangles[t];
         for (int i = 0; i < 3; ++i) {
             const int j = (i + 1) % 3;
@@ -376,20 +535,19 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
     bool in_u = false;
     for (int i = -1; i < 3 && !in_u; ++i) {
         const Vec2 x = i < 0 ? centre : 0.5 * (centre + pq[i]);
-        in_u = inside(x, pq, delta) && std::any_of(kept.begin(), kept.end(), [&](const auto& ps) { return inside(x, ps, delta); });
+        for (size_t k = 0; k < kept.size() && !in_u; ++k) in_u = kept_projected[k] && inside(x, kept[k], delta);
+        in_u = in_u && inside(x, pq, delta);
     }
     if (!in_u) return HUGE_VAL;
-    std::sort(sides.begin(), sides.end());
-    for (size_t i = 0, j; i < sides.size(); i = j) {
-        bool left = false, right = false;
-        for (j = i; j < sides.size() && sides[j].a == sides[i].a && sides[j].b == sides[i].b; ++j)
-            (sides[j].side > 0 ? left : right) = true;
-        if (left && right) continue;  // inside U
-        for (size_t k = i; k < j; ++k) {
-            double t0, t1;
-            if (clip(sides[k].pa, sides[k].pb, pq, m, delta, t0, t1) && !covered(sides[k].pa, sides[k].pb, t0, t1, kept, delta))
-                return HUGE_VAL;
-        }
+    // A boundary of U through K: a gap, or a crack narrower than the goal between triangles meant
+    // to meet (two corners a rounding apart where one was meant). The kept triangles grown by a
+    // share of the room left may close it (cracks_closed); a point of K is then within that
+    // growth of U, and the bound adds it.
+    Side open{};
+    if (crack > 0 ? !cracks_closed(kept, kept_projected, crack, pq, m, delta) : !edges_inside(sides, kept, pq, m, delta, open)) {
+        const double next = 0.25 * (goal - bound);
+        if (crack > 0 || !(next > 0) || !crack_beside(open, kept, pq, m, delta, 1.5 * next)) return HUGE_VAL;
+        return cover_bound_of(g, o, q, n, goal, slack, next);
     }
     // The strip outside K: at corner i (angle a), K's corner lies delta / sin(a / 2) inside, and
     // elsewhere a point of the strip is within delta of K. A needle's tip is bounded instead.
@@ -410,7 +568,7 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
         strip = std::max(strip, at_corner);
     }
     slack = 256 * 0x1p-52 * (std::max(bound, tips) + 2 * std::max(M, tip_m));
-    return std::max(bound + strip, tips) + tilt;
+    return std::max(bound + strip + (reach > 0 ? reach + delta : 0), tips) + tilt;
 }
 
 }  // namespace
