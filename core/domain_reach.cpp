@@ -159,7 +159,18 @@ bool DomainMesh::long_arc_point(int f, Vec2& out) const {
     if (best >= 0)
         for (double step : {1e-3, 1e-5, 1e-7, 1e-9})
             if (point_beside(f, best, len, step, out)) return true;
-    return interior_point(f, out);
+    if (interior_point(f, out)) return true;
+    // A piece folded by rounding (its loop clockwise, its area below rounding) has every point
+    // beside its arcs outside it: its corners' centroid, where it lies in the piece (generate_pairs11.py
+    // "a_cone_over_fan" 21079, side A, target 8: a piece 2.3e-6 by 1.4e-7 beside a needle source's
+    // corner regions went to its face region, 6e-6 away, d^2 6.9e-11 below the truth).
+    Vec2 c{0, 0};
+    int n = 0;
+    for_each_half_edge(f, [&](int h) { c = c + vertices_[half_[h].origin].p, ++n; });
+    c = (1.0 / n) * c;
+    if (!point_in_face(f, c)) return false;
+    out = c;
+    return true;
 }
 
 // What the regions before the last left is in the last one (the regions tile the plane), but

@@ -96,23 +96,28 @@ double brute_d2(const TargetFrame& fr, const TriangleMesh& B, Vec2 p) {
     return d * d;
 }
 
-// Arcs between two domains (counted in `arcs`) where either domain's quadratic misses d^2 by brute
-// force over B at the arc's middle by more than the domain mesh's placement of its vertices
+// Arcs between two domains (counted in `arcs`) where either domain's quadratic misses d2_at(m), an
+// oracle's d^2 at the arc's middle m, by more than the domain mesh's placement of its vertices
 // (kOffCurve, or `placement` where a test knows its vertices closer) times the two quadratics'
-// gradients, and 1e-12.
-int arc_middles_off_d2(const DomainMesh& mesh, const TargetFrame& fr, const TriangleMesh& B, int& arcs, double placement = 1e-6) {
+// gradients, and `floor`.
+template <class D2>
+int arc_middles_off(const DomainMesh& mesh, int& arcs, double placement, double floor, D2 d2_at) {
     int off = 0;
     for (size_t e = 0; e < mesh.edges().size(); ++e) {
         const DomainMesh::Edge& E = mesh.edges()[e];
         const int F = mesh.half_edges()[2 * e].face, G = mesh.half_edges()[2 * e + 1].face;
         if (!E.alive || F <= 0 || G <= 0) continue;
         const Vec2 m = E.curve(0.5 * (E.z0 + E.z1));
-        const double d2 = brute_d2(fr, B, m);
-        const double tol = placement * (norm(mesh.faces()[F].poly.gradient(m)) + norm(mesh.faces()[G].poly.gradient(m))) + 1e-12;
+        const double d2 = d2_at(m);
+        const double tol = placement * (norm(mesh.faces()[F].poly.gradient(m)) + norm(mesh.faces()[G].poly.gradient(m))) + floor;
         for (int X : {F, G}) off += std::abs(mesh.faces()[X].poly(m) - d2) > tol;
         ++arcs;
     }
     return off;
+}
+// The same against brute force over B, to 1e-12.
+int arc_middles_off_d2(const DomainMesh& mesh, const TargetFrame& fr, const TriangleMesh& B, int& arcs, double placement = 1e-6) {
+    return arc_middles_off(mesh, arcs, placement, 1e-12, [&](Vec2 m) { return brute_d2(fr, B, m); });
 }
 
 // The domain polynomial at p (frame) and d^2 there by brute force over B (frame units); false
@@ -1623,19 +1628,21 @@ long double sliver_d2_ld(const L3& p, const L3& a, const L3& b, const L3& c) {
     return std::min(best, h * h / nn);
 }
 
-// grid_points_off against sliver_d2_ld over B, at the grid point taken in long double from the
-// frame (no world point's rounding).
+// sliver_d2_ld over B at p (frame), the point taken in long double from the frame (no world
+// point's rounding), in frame units.
+long double brute_d2_ld(const TargetFrame& f, const TriangleMesh& B, Vec2 p) {
+    const L3 w = ld(f.origin) + ld(f.e1) * ((long double)p.x * f.scale) + ld(f.e2) * ((long double)p.y * f.scale);
+    long double d2 = HUGE_VALL;
+    for (size_t t = 0; t < B.num_triangles(); ++t) {
+        const auto s = B.corners(t);
+        d2 = std::min(d2, sliver_d2_ld(w, ld(s[0]), ld(s[1]), ld(s[2])));
+    }
+    return d2 / ((long double)f.scale * f.scale);
+}
+
+// grid_points_off against brute_d2_ld over B.
 int grid_points_off_d2_ld(const TargetSolver& ts, const TriangleMesh& B, int n, double tol) {
-    const TargetFrame& f = ts.frame();
-    return grid_points_off(*ts.domain_mesh(), f, n, tol, [&](Vec2 p) {
-        const L3 w = ld(f.origin) + ld(f.e1) * ((long double)p.x * f.scale) + ld(f.e2) * ((long double)p.y * f.scale);
-        long double d2 = HUGE_VALL;
-        for (size_t t = 0; t < B.num_triangles(); ++t) {
-            const auto s = B.corners(t);
-            d2 = std::min(d2, sliver_d2_ld(w, ld(s[0]), ld(s[1]), ld(s[2])));
-        }
-        return d2 / ((long double)f.scale * f.scale);
-    });
+    return grid_points_off(*ts.domain_mesh(), ts.frame(), n, tol, [&](Vec2 p) { return brute_d2_ld(ts.frame(), B, p); });
 }
 
 // The probe of the constructions checked in long double: d^2 on a 24 x 24 grid over T' against
@@ -4449,4 +4456,38 @@ TEST(Degenerate, RegionLineThroughTheGapBesideAHoleCutsTheFace) {
             const auto d2_at = [&](Vec2 p) { return frame_d2(fr, S, s, p); };
             EXPECT_EQ(grid_points_off(mesh, fr, 400, 1e-13, d2_at), 0) << "after source " << s << ", " << label;
         });
+}
+
+// A folded piece left over after a needle source's regions are cut in goes to the region deepest
+// at its corners' centroid where no point beside its arcs lies in it (DomainMesh::long_arc_point).
+// A cone over a fan 1.4e5 from the origin (generate_pairs11.py "a_cone_over_fan" 21079, side A,
+// target 8; reduced to three of B's triangles): the first is a needle, 2 long and 6e-10 wide at its
+// far end in frame units, nearly parallel to T' 6.6e-4 below it and tilted 0.013 rad across, so
+// its face region on T' is a strip 1e-10 wide 8.9e-6 off its corner's projection, near T''s
+// corner. A piece of a domain just beside that corner, 2.3e-6 by 1.4e-7 and folded (its loop
+// clockwise, its area -1.6e-13, within rounding), was left in no region by the cuts; every point
+// beside its arcs lies outside it, so no point of it was found and it went to the face region
+// (the last, what the cuts leave), 6e-6 outside that region: the face's plane quadratic, 6.9e-11
+// below d^2 there ("d^2 jumps by 6.89644e-11"). Oracle: brute force over B in long double at every
+// arc's middle (in double, a world point's rounding 1.4e5 from the origin puts d^2 1e-12 off),
+// both domains' quadratics within the vertices' placement (1e-6) times their gradients and 1e-14
+// (without the change, off at the folded piece's arcs).
+TEST(Degenerate, AFoldedLeftoverPieceGoesToTheRegionAtItsCentroid) {
+    const TriangleMesh A = make_mesh({{56179.788399582387, 29995.345794049546, -135368.00072724989},
+                                      {56179.782728993297, 29995.360174979585, -135367.99622350128},
+                                      {56179.793227166083, 29995.361099125872, -135367.99942357992}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{56179.788402805367, 29995.345792178348, -135368.00071721699},
+                                      {56179.820104569517, 29995.344900091546, -135368.01106748378},
+                                      {56179.820104569939, 29995.344900090917, -135368.01106748404},
+                                      {56179.791167008509, 29995.371320831873, -135367.99684394975},
+                                      {56179.792037341358, 29995.371971368157, -135367.99700220706},
+                                      {56179.792037341358, 29995.37197136816, -135367.99700220706},
+                                      {56179.798564837736, 29995.376850390301, -135367.99818913688}},
+                                     {{0, 1, 2}, {0, 3, 4}, {5, 6, 0}});
+    expect_constructions_hold(A, B, [&](const TargetSolver& ts) {
+        int arcs = 0;
+        EXPECT_EQ(arc_middles_off(*ts.domain_mesh(), arcs, 1e-6, 1e-14, [&](Vec2 m) { return (double)brute_d2_ld(ts.frame(), B, m); }), 0);
+        EXPECT_GE(arcs, 5);
+    }, /*to_the_end=*/true);
 }
