@@ -90,6 +90,18 @@ bool clip(const Vec2& a, const Vec2& b, const std::array<Vec2, 3>& p, const std:
     return t0 <= t1;
 }
 
+// Whether the intervals `in` (parts of a segment, as parameters) together hold [t0, t1].
+bool holds(std::vector<std::pair<double, double>>& in, double t0, double t1) {
+    std::sort(in.begin(), in.end());
+    double reached = t0;  // [t0, reached] is covered, up to the point itself
+    for (const auto& [s0, s1] : in) {
+        if (s0 > reached) break;
+        reached = std::max(reached, s1);
+        if (reached >= t1) return true;
+    }
+    return false;
+}
+
 // Whether the part [t0, t1] of the segment [a, b] lies in the union of the triangles `kept` (either
 // orientation), each shrunk by delta: then none of its points is on the union's boundary, whatever
 // the triangles on its own sides. (Generate_pairs9.py "tiny_coplanar_retri" 7793: needles of B
@@ -102,14 +114,7 @@ bool covered(const Vec2& a, const Vec2& b, double t0, double t1, const std::vect
         double s0, s1;
         if (clip(a, b, ps, inward(ps), delta, s0, s1)) in.push_back({s0, s1});
     }
-    std::sort(in.begin(), in.end());
-    double reached = t0;  // [t0, reached] is covered, up to the point itself
-    for (const auto& [s0, s1] : in) {
-        if (s0 > reached) break;
-        reached = std::max(reached, s1);
-        if (reached >= t1) return true;
-    }
-    return false;
+    return holds(in, t0, t1);
 }
 
 // Whether x lies in the triangle p (either orientation) at least delta inside every edge.
@@ -130,6 +135,12 @@ void grown_half_planes(std::array<Vec2, 3> s, double grow, std::vector<HalfPlane
     for (int k = 0; k < 3; ++k) out[k] = HalfPlane{m[k], dot(m[k], s[k]) - grow};
 }
 
+// The corners (counter-clockwise) of the box [lo, hi] grown by r on every side.
+std::vector<Vec2> box_corners(Vec2 lo, Vec2 hi, double r) {
+    lo = lo - Vec2{r, r}, hi = hi + Vec2{r, r};
+    return {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+}
+
 // The triangle s (either orientation) grown by w: its edges moved out by w, and each corner sharper
 // than a right angle cut across its bisector at w from it; every point lies within sqrt(2) w of s
 // (at a cut corner of angle a, the hexagon's corners lie w / cos(pi / 4 - a / 4) from s's; at
@@ -147,8 +158,7 @@ void grown_hexagon(std::array<Vec2, 3> s, double w, std::vector<HalfPlane>& plan
         if (dot(u, v) > 0) planes.push_back(HalfPlane{b / norm(b), dot(b, s[k]) / norm(b) - w});
         lo = {std::min(lo.x, s[k].x), std::min(lo.y, s[k].y)}, hi = {std::max(hi.x, s[k].x), std::max(hi.y, s[k].y)};
     }
-    lo = lo - Vec2{2 * w, 2 * w}, hi = hi + Vec2{2 * w, 2 * w};
-    corners = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+    corners = box_corners(lo, hi, 2 * w);
     clip_convex_in_place(corners, planes, tmp);
 }
 
@@ -167,14 +177,7 @@ bool covered_by(const Vec2& a, const Vec2& b, double t0, double t1, const std::v
         }
         if (s0 <= s1) in.push_back({s0, s1});
     }
-    std::sort(in.begin(), in.end());
-    double reached = t0;
-    for (const auto& [s0, s1] : in) {
-        if (s0 > reached) break;
-        reached = std::max(reached, s1);
-        if (reached >= t1) return true;
-    }
-    return false;
+    return holds(in, t0, t1);
 }
 
 // How far along n a point x of q is from S where its line meets S, at most, over the points xs: by
@@ -498,8 +501,7 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
         part.assign(pq.begin(), pq.end());
         const double grow = 0x1p-46 * std::max(M, m);  // more than the projections' rounding
         if (reach > 0) {  // q's part within S, q grown by reach (the points a crack's width away)
-            const double r = 2 * (reach + grow);
-            part = {lo - Vec2{r, r}, {hi.x + r, lo.y - r}, hi + Vec2{r, r}, {lo.x - r, hi.y + r}};
+            part = box_corners(lo, hi, 2 * (reach + grow));
             grown_half_planes(pq, reach + grow, planes);
             clip_convex_in_place(part, planes, tmp);
         }
@@ -535,8 +537,8 @@ double cover_bound_of(const MeshGrid& g, const Vec3& o, const std::array<Vec3, 3
     bool in_u = false;
     for (int i = -1; i < 3 && !in_u; ++i) {
         const Vec2 x = i < 0 ? centre : 0.5 * (centre + pq[i]);
+        if (!inside(x, pq, delta)) continue;
         for (size_t k = 0; k < kept.size() && !in_u; ++k) in_u = kept_projected[k] && inside(x, kept[k], delta);
-        in_u = in_u && inside(x, pq, delta);
     }
     if (!in_u) return HUGE_VAL;
     // A boundary of U through K: a gap, or a crack narrower than the goal between triangles meant
