@@ -433,13 +433,22 @@ bool DomainMesh::near_arc(int h, Vec2 p, double tol) const {
     if (ev > tol * ((std::fabs(gr.x) + std::fabs(gr.y)) * (1 + 1e-12))) return false;
     double gn = norm(gr);
     if (gn == 0 || ev > tol * gn) return false;
-    // On the conic; on this arc if the foot lies within the arc's parameter range.
-    double lo = std::min(E.z0, E.z1), hi = std::max(E.z0, E.z1);
+    // On the conic; on this arc if the foot lies within the arc's parameter range. Each of 16
+    // cells of the parameter is searched where p lies within tol of its samples plus twice the
+    // longer of the cells beside it: the parameterisation is not uniform, and where the arc
+    // covers a tiny parameter range the cells' lengths differ eight-fold (a parabola's arc whose
+    // first cell is 1.1e-6 long, its last 9e-6: a point 2.5e-8 off the arc lay 2e-6 from the
+    // nearest sample, past tol plus the first cell's length; generate_pairs11.py
+    // "crack_overlap_step" 6000).
+    const double lo = std::min(E.z0, E.z1), hi = std::max(E.z0, E.z1), dz = (hi - lo) / 16.0;
+    Vec2 s[17];
+    for (int i = 0; i <= 16; ++i) s[i] = E.curve(lo + dz * i);
     for (int i = 0; i <= 16; ++i) {
-        double z0 = lo + (hi - lo) * i / 16.0;
-        if (norm(E.curve(z0) - p) <= tol + norm(E.curve(lo + (hi - lo) / 16.0) - E.curve(lo))) {
+        const double cell = std::max(i > 0 ? norm(s[i] - s[i - 1]) : 0.0, i < 16 ? norm(s[i + 1] - s[i]) : 0.0);
+        if (norm(s[i] - p) <= tol + 2 * cell) {
             // refine by golden-section on |curve(z) - p| over the neighbouring cells
-            double l = std::max(lo, z0 - (hi - lo) / 16.0), r = std::min(hi, z0 + (hi - lo) / 16.0);
+            const double z0 = lo + dz * i;
+            double l = std::max(lo, z0 - dz), r = std::min(hi, z0 + dz);
             for (int it = 0; it < 60; ++it) {
                 double m1 = l + (r - l) * 0.382, m2 = l + (r - l) * 0.618;
                 if (norm(E.curve(m1) - p) < norm(E.curve(m2) - p)) r = m2; else l = m1;

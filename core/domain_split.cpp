@@ -1588,6 +1588,23 @@ void DomainMesh::pinch_face(int va, int vb, int ha, int hb) {
     half_[in_b].next = ha; half_[ha].prev = in_b;
     half_[in_a].next = hb; half_[hb].prev = in_a;
     for (int x : around) touch_edge_faces(x >> 1);
+    // The face's loops name one half-edge of the loop that is now two lobes: name the other lobe
+    // too, or the rest of the split (point_in_face, near_boundary, the chords' tests) sees only
+    // one of them. (Generate_pairs17.py "export_f32" 12910, side A, target 0, 11th insertion: a
+    // wedge 0.46 long and 1.8e-3 rad wide whose tip was pinched off by a line pair's line through
+    // it; the line's chord along the wedge had its middle "outside" the face, was dropped, and the
+    // wedge went whole to the nearer side, d^2 7e-5 off along it.)
+    std::vector<int>& loops = faces_[half_[ha].face].loops;
+    auto named = [&](int start) {
+        int k = start, n = 0;
+        do {
+            if (std::find(loops.begin(), loops.end(), k) != loops.end()) return true;
+            k = half_[k].next;
+        } while (k != start && ++n < 1000000);
+        return false;
+    };
+    for (int lobe : {ha, hb})
+        if (!named(lobe)) loops.push_back(lobe);
 }
 
 // A chord shorter than kOffCurve whose ends lie off its curve by half its length or more is no

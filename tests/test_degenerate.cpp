@@ -4491,3 +4491,94 @@ TEST(Degenerate, AFoldedLeftoverPieceGoesToTheRegionAtItsCentroid) {
         EXPECT_GE(arcs, 5);
     }, /*to_the_end=*/true);
 }
+
+// A point beside a curved arc is near it, however unevenly the arc's parameter runs
+// (DomainMesh::near_arc). Generate_pairs11.py "crack_overlap_step" 6000 (side B, target 153;
+// reduced to three of A's triangles, segments 1e-5 of T' long clustered by T''s corner): a
+// parabola's arc between two vertex-against-edge domains covers a parameter range of 1.1e-5, its
+// first sixteenth 1.1e-6 long in the plane and its last 9e-6. Points beside the arc were searched
+// only within tol plus the first cell's length of the samples, so a probe 2.5e-8 off the arc, 2e-6
+// from the nearest sample, was "not near" the boundary, and validate() held it to d^2 at 1e-7
+// relative where the domain mesh's resolution (a sliver 9e-8 wide along the arc, where a third
+// segment's corner is nearer) allows 2.8e-4 ("polynomial 5.51309559116e-09 but d^2 =
+// 5.5115738694e-09"). Oracle: points put half the tolerance off every curved arc, at 64 places
+// along it, along the arc's normal: each is within the tolerance of the arc by construction.
+TEST(Degenerate, APointBesideAnArcWithAnUnevenParameterIsNearIt) {
+    const TriangleMesh A = make_mesh({{0.001148755008538389, 0.00080657864451893677, -0.0001185623150612596},
+                                      {0.0011780860356982279, 0.0008253031057423579, -0.00011790981624643909},
+                                      {0.0011622360387935748, 0.00082337422694321507, -0.00010864057006291242}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{0.0011622358499296154, 0.00082337407071670667, -0.00010864061564469777},
+                                      {0.0011622358499296158, 0.00082337407071670754, -0.00010864061564469712},
+                                      {0.0011622362159294992, 0.0008233740536694211, -0.00010864090204494612},
+                                      {0.0011622361529992319, 0.00082337403533187727, -0.00010864087778963272},
+                                      {0.0011622362929887815, 0.00082337424797026149, -0.00010864072984408667},
+                                      {0.0011622362929887811, 0.0008233742479702603, -0.0001086407298440877},
+                                      {0.0011622362450381528, 0.00082337415148446211, -0.00010864080830714431},
+                                      {0.0011622361517849586, 0.00082337403518410528, -0.00010864087707951286},
+                                      {0.001162236151768477, 0.00082337403518209951, -0.00010864087706987432}},
+                                     {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+    expect_constructions_hold(A, B, [&](const TargetSolver& ts) {
+        const DomainMesh& m = *ts.domain_mesh();
+        const double tol = 2 * DomainMesh::kVertexTolerance;
+        int tried = 0, missed = 0;
+        for (size_t e = 0; e < m.edges().size(); ++e) {
+            const DomainMesh::Edge& E = m.edges()[e];
+            if (!E.alive || E.curve.straight()) continue;
+            for (int k = 0; k < 64; ++k) {
+                const Vec2 q = m.edge_point((int)e, (k + 0.5) / 64), n = E.equation.gradient(q);
+                if (!(norm(n) > 0)) continue;
+                const Vec2 p = q + (0.5 * tol / norm(n)) * n;
+                for (int side = 0; side < 2; ++side) {
+                    const int f = m.half_edges()[2 * e + side].face;
+                    if (f <= 0) continue;
+                    ++tried;
+                    missed += !m.near_boundary(f, p, tol);
+                }
+            }
+        }
+        EXPECT_EQ(missed, 0) << "of " << tried;
+        EXPECT_GE(tried, 64);
+    }, /*to_the_end=*/true);
+}
+
+// A face pinched into two lobes keeps both for the rest of the split (DomainMesh::pinch_face).
+// Generate_pairs17.py "export_f32" 12910 (side A, target 0, the paper's order; reduced to four of
+// B's triangles, float32 coordinates). Two sources share a corner at T''s corner (1, 0); the
+// face region of the first, 5, and the region line of the second, 1, bound a wedge 0.46 long and
+// 1.8e-3 rad wide towards that corner, and the line of their planes' line pair where they tie runs
+// along the wedge through its tip. That tip was pinched off as a lobe 1e-6 long; the face's loops
+// still named only the tip, so the line's chord along the wedge had its middle "outside" the face
+// and was dropped, and the whole wedge went to source 1, d^2 up to 7e-5 above the truth (0.09)
+// along one side, with a step of 6.8e-5 at the wedge's end. Oracle: d^2 by brute force in long
+// double at 41 x 21 points in a band twice the wedge's width about that line, to 1e-12.
+TEST(Degenerate, APinchedFaceKeepsBothLobesForTheRestOfTheSplit) {
+    const TriangleMesh A = make_mesh({{-0.43537811484215716, -1.563473338508595, -0.7435389166184523},
+                                      {0.46385639676635204, -1.9041405554416118, -2.2688380824228385},
+                                      {0.7798483807324186, -2.60141662017735, -1.5784716763401374}},
+                                     {{0, 1, 2}});
+    const TriangleMesh B = make_mesh({{-0.4353453814983368, -2.2099509239196777, -1.5901455879211426},
+                                      {0.4982384443283081, -2.3106532096862793, -2.093093156814575},
+                                      {-0.2442822903394699, -2.5005736351013184, -1.212581753730774},
+                                      {0.6635699272155762, -2.562136173248291, -1.7663781642913818},
+                                      {0.03616567328572273, -2.517815113067627, -0.7829623222351074},
+                                      {-0.4353781044483185, -1.5634733438491821, -0.7435389161109924},
+                                      {-0.4750785231590271, -1.7401700019836426, -1.7932428121566772},
+                                      {-0.4353781044483185, -1.5634733438491821, -0.7435389161109924}},
+                                     {{0, 1, 2}, {2, 3, 4}, {2, 4, 5}, {6, 0, 7}});
+    expect_constructions_hold(A, B, [&](const TargetSolver& ts) {
+        const DomainMesh& m = *ts.domain_mesh();
+        int tried = 0, off = 0;
+        for (int i = 0; i <= 40; ++i)
+            for (int j = 0; j <= 20; ++j) {
+                const double x = 0.55 + 0.01 * i, w = 1.8e-3 * (1 - x);
+                const Vec2 p{x, 0.24543 * (1 - x) + w * (j - 10) / 10.0};
+                const int f = m.face_at(p);
+                if (f <= 0 || m.faces()[f].infinite) continue;
+                ++tried;
+                off += std::fabs(m.faces()[f].poly(p) - (double)brute_d2_ld(ts.frame(), B, p)) > 1e-12;
+            }
+        EXPECT_EQ(off, 0) << "of " << tried;
+        EXPECT_GE(tried, 800);
+    }, /*to_the_end=*/true);
+}
