@@ -1596,12 +1596,9 @@ void DomainMesh::pinch_face(int va, int vb, int ha, int hb) {
     // wedge went whole to the nearer side, d^2 7e-5 off along it.)
     std::vector<int>& loops = faces_[half_[ha].face].loops;
     auto named = [&](int start) {
-        int k = start, n = 0;
-        do {
-            if (std::find(loops.begin(), loops.end(), k) != loops.end()) return true;
-            k = half_[k].next;
-        } while (k != start && ++n < 1000000);
-        return false;
+        bool found = false;
+        for_each_in_loop(start, [&](int h) { found = found || std::find(loops.begin(), loops.end(), h) != loops.end(); });
+        return found;
     };
     for (int lobe : {ha, hb})
         if (!named(lobe)) loops.push_back(lobe);
