@@ -336,10 +336,19 @@ double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t
     if (at_worst - err > seen.value) seen = {at_worst - err, Q.p[wi]};
     if (u == t) return worst;
     const Tri3 U = relative(g.mesh(), u, tg.o);
+    // The first cut that leaves Q's corners on both sides: the bisector of two neighbours folded
+    // onto each other may pass beside Q, where U is nearer only past its own edge; that cut gave
+    // all of Q back to T, kCuts times over, and the ridge between them was never tried
+    // (generate_pairs9.py "tiny_coplanar_retri" 9489, B to A: needles of B folded over a triangle
+    // at a hub of corners an ulp apart; a target stayed open, its interval 9.2e-9 of the diagonal).
     Vec3 a, nrm;
     Piece pos, neg;
-    if (!bisector(T, U, a, nrm) && !ridge(Q, T, U, a, nrm) && !across_edge(T, Q.p[wi], a, nrm)) return worst;
-    if (!cut(Q, a, nrm, pos, neg)) return worst;
+    bool made = false;
+    for (int k = 0; k < 3 && !made; ++k) {
+        const bool plane = k == 0 ? bisector(T, U, a, nrm) : k == 1 ? ridge(Q, T, U, a, nrm) : across_edge(T, Q.p[wi], a, nrm);
+        made = plane && cut(Q, a, nrm, pos, neg) && pos.n >= 3 && neg.n >= 3;
+    }
+    if (!made) return worst;
     const double on_t = pos.n ? piece_bound(g, tg, pos, t, goal, depth - 1, slack, seen) : -HUGE_VAL;
     if (!(on_t <= goal)) return worst;  // this side did not close: the whole piece does not
     const double on_u = neg.n ? piece_bound(g, tg, neg, u, goal, depth - 1, slack, seen) : -HUGE_VAL;

@@ -833,3 +833,60 @@ TEST(ConfirmTop, LongestEdgeBoundFarFromTheOriginTakesTheExactNearestTriangle) {
     EXPECT_GE(bound, lower);
     EXPECT_LE(bound, lower + 4 * tol) << "above the sampled distance by " << bound - lower;
 }
+
+// Needles folded over a triangle at a hub of corners an ulp of the coordinates apart
+// (generate_pairs9.py "tiny_coplanar_retri" 9489, B to A, as it was and moved to the origin; the
+// hub's corners are multiples of 2^-17 from B's corner there). On B's triangle 0 the distance
+// peaks on a ridge between two needles of A running 1.7e3 from the hub, and the corner bound
+// cut each piece there between the needle nearest its centre and A's triangle folded under it:
+// their bisector passed beside the piece, gave it all back to the needle, and the ridge's cut
+// was never tried; the target stayed open and the interval was 9.2e-9 of the diagonal. Oracles:
+// the largest brute-force distance over samples of the triangle near the hub, refined round the
+// best (a lower bound of the truth, relative to the hub, so exact far from the origin too), at
+// most the upper end; at the origin, the brute-force distance of the witness point, at least the
+// lower end; the farthest vertex's, at most the distance.
+TEST(ConfirmTop, BisectorBesideAPieceGivesWayToTheRidge) {
+    const double u = 0x1p-17;
+    const Vec3 p0{330.47312927246094, -1437.0382461547852, 786.7590637207031};
+    const Vec3 p4{-140.38845825195312, 1095.7558975219727, -326.5758514404297};
+    const Vec3 h1 = Vec3{0, -4, 0} * u, h2 = Vec3{1, -1, 4} * u, h3 = Vec3{1, 4, 2} * u, h5 = Vec3{-1, 3, -2} * u,
+               h6 = Vec3{-1, -2, -4} * u, h7{0, 0, 0};
+    const std::vector<Vec3> a{p0, h1, h2, h3, p4, h5, h6, h7}, b{h7, p0, p4, h6, h1, h2, h3, h5};
+    const std::vector<Tri> fa{{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {4, 3, 5}, {4, 5, 6}, {4, 6, 1},
+                              {4, 1, 7}, {7, 1, 0}, {1, 2, 3}, {1, 3, 5}, {1, 5, 6}, {1, 6, 6}};
+    const std::vector<Tri> fb{{0, 1, 2}, {3, 4, 5}, {3, 5, 6}, {3, 6, 7}};
+    const TriangleMesh A0 = mesh_of(a, fa), B0 = mesh_of(b, fb);
+    // The sampled lower bound, relative to the hub.
+    double lower = -1, su = 0, sv = 0;
+    const auto sample = [&](double s, double t) {
+        if (s < 0 || t < 0) return;
+        if (const double d = brute_distance(s * p0 + t * p4, A0); d > lower) lower = d, su = s, sv = t;
+    };
+    for (int i = 0; i <= 60; ++i)
+        for (int j = 0; j <= 60; ++j) sample(i * 2e-9, j * 2e-9);
+    for (double step = 2e-9 / 8; step > 1e-17; step /= 8) {
+        const double s0 = su, t0 = sv;
+        for (int i = -8; i <= 8; ++i)
+            for (int j = -8; j <= 8; ++j) sample(s0 + i * step, t0 + j * step);
+    }
+    double vertices = 0;
+    for (const Vec3& p : b) vertices = std::max(vertices, brute_distance(p, A0));
+    const Vec3 o{-49157873547.750717, 35546734081.084541, -72692297641.641632};
+    for (const Vec3& off : {Vec3{0, 0, 0}, o}) {
+        SCOPED_TRACE("offset " + std::to_string(off.x));
+        const TriangleMesh A = shifted(A0, off), B = shifted(B0, off);
+        Box3 box = A.bounds();
+        box.add(B.bounds());
+        for (Mode mode : {Mode::Paper, Mode::Fast}) {
+            HausdorffOptions opt;
+            opt.mode = mode;
+            const OneSidedResult r = hausdorff(A, B, opt).b_to_a;
+            EXPECT_GE(r.upper, lower);
+            EXPECT_GE(r.distance, vertices);
+            EXPECT_LE(r.lower, r.distance);
+            EXPECT_GE(r.upper, r.distance);
+            EXPECT_LE(r.upper - r.lower, 1e-9 * box.diagonal()) << "upper " << r.upper << " lower " << r.lower;
+            if (off.x == 0) EXPECT_LE(r.lower, brute_distance(r.from_point, A));
+        }
+    }
+}
