@@ -281,16 +281,13 @@ private:
     struct SplitCall;
     // `quad`: where g is a difference of two quadratics, the larger of their quadratic parts'
     // quad_scale(): g's part is exact only to an ulp of it.
-    // `source`: where g is a face's polynomial less a source's quadratic, that quadratic.
-    void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out, double quad = 0, double operands = 0,
-                         const Quadratic2* source = nullptr);
+    void split_face_into(int f, const Quadratic2& g, std::vector<SplitPiece>& out, double quad = 0, double operands = 0);
     // Face f split where q lies below its polynomial (g = poly - q > 0 there, with both operands'
     // scales for the rounding); returns g.
     Quadratic2 split_where_below(int f, const Quadratic2& q, std::vector<SplitPiece>& out);
     bool split_by_line_pair(int f, const Quadratic2& g, double l2_rounding, std::vector<SplitPiece>& out);
     void split_boundary_where_g_changes_sign(SplitCall& s);
     void split_arc_at_sign_changes(SplitCall& s, int e);
-    void tie_across(const SplitCall& s, int e, double lo, double hi, double& z, Vec2& p) const;
     bool split_at_touching_point(SplitCall& s, int e, const Poly& along);
     static bool at_centre(const Quadratic2& g, Vec2 p);
     bool line_pair(SplitCall& s);

@@ -504,7 +504,6 @@ struct DomainMesh::SplitCall {
     int centre = -1;          // a line pair's centre: the vertex on both lines (add_line_pair_centre)
     int pinches = 0;          // pairs of vertices made one where the face is pinched (pinch_face)
     double l2_rounding = 0;   // the rounding of g's smaller eigenvalue, for decompose_conic (0: unknown)
-    const Quadratic2* source = nullptr;  // the source's quadratic g compares the face with (split_where_below)
 
     SplitCall(int face, const Quadratic2& g_unit, bool linear, DomainMesh::Scratch& scratch)
         : f(face), g(g_unit), g_linear(linear), tmp(scratch) {
@@ -566,12 +565,11 @@ std::vector<DomainMesh::SplitPiece> DomainMesh::split_face(int f, const Quadrati
 Quadratic2 DomainMesh::split_where_below(int f, const Quadratic2& q, std::vector<SplitPiece>& out) {
     const Quadratic2& p = faces_[f].poly;
     const Quadratic2 g = p - q;
-    split_face_into(f, g, out, std::max(p.quad_scale(), q.quad_scale()), std::max(p.scale(), q.scale()), &q);
+    split_face_into(f, g, out, std::max(p.quad_scale(), q.quad_scale()), std::max(p.scale(), q.scale()));
     return g;
 }
 
-void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<SplitPiece>& out, double quad, double operands,
-                                 const Quadratic2* source) {
+void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<SplitPiece>& out, double quad, double operands) {
     out.clear();
     double gs = g_in.scale();
     if (!(gs > 0)) { out.push_back({f, 0}); return; }
@@ -639,7 +637,6 @@ void DomainMesh::split_face_into(int f, const Quadratic2& g_in, std::vector<Spli
     if (!g_in.is_linear() && split_by_line_pair(f, g, l2_rounding, out)) return;
     SplitCall s(f, g, g_in.is_linear(), tmp_);
     s.l2_rounding = l2_rounding;
-    s.source = source;
     split_boundary_where_g_changes_sign(s);  // 1.
     classify_by_side(s);                     // 2.
     find_chords(s);                          // 3.
@@ -777,7 +774,6 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
         // region's label.)
         if (!polish_on_two(g, eq, p)) polish_along_arc(g, eq, curve, edges_[cur].z0, hi, z, p);
         if (snap_to_end(s, cur, p, kSnap)) continue;
-        tie_across(s, cur, edges_[cur].z0, hi, z, p);
         // Polished onto g = 0 where g is flat (near a line pair's centre) the point may move past
         // the end of a straight arc: then it is that end (degenerate pair "mirror" 16298: a
         // vertex 3.4e-8 beyond a corner put the boundary out of order, the two lines' chords
@@ -790,37 +786,6 @@ void DomainMesh::split_arc_at_sign_changes(SplitCall& s, int e) {
         s.mark_zero(v);
         cur = (int)edges_.size() - 1;
     }
-}
-
-// Where g meets arc e at a glancing angle, the arc's own offset from its curve (up to kOffCurve:
-// a nearly double line kept as a parabola) moves g's crossing far along it, while the source's tie
-// with the face across the arc, whose difference from the source may hardly change across the
-// arc, need not move. So the crossing (z, p) moves to the nearest point of the arc in (lo, hi)
-// where the source ties with the face across, if that lies within kVertexTolerance of g's curve
-// (a vertex may sit that far from its curves) and farther than kCluster from p (else nothing
-// changes): the face across then finds its own crossing at that vertex, and no piece of the arc
-// between two crossings is left to divide the source from that face. (Generate_pairs9.py "cluster_coinc_far" 9662, A's target 7,
-// nearest first, the 6th insertion: a source's edge lying in another's plane to 1e-10, their tie
-// a parabola whose arc is 1.3e-10 off it in d^2; a third source, a plane nearly parallel to the
-// second, crossed it where it tied with the edge 1.6e-5 from where it tied with the plane, and
-// between the two the old arc divided the two planes, d^2 stepping by 4.5e-11 across it.)
-void DomainMesh::tie_across(const SplitCall& s, int e, double lo, double hi, double& z, Vec2& p) const {
-    if (!s.source) return;
-    const int across = half_[2 * e].face == s.f ? half_[2 * e + 1].face : half_[2 * e].face;
-    if (across <= 0 || across == s.f || faces_[across].infinite) return;
-    Quadratic2 t = faces_[across].poly - *s.source;
-    const double ts = t.scale();
-    if (!(ts > 0)) return;
-    t = t * (1.0 / ts);
-    double roots[kMaxSignChangeRoots];
-    const int n = sign_change_roots(edges_[e].curve.compose(t), lo, hi, roots);
-    double best = HUGE_VAL, zt = z;
-    for (int k = 0; k < n; ++k)
-        if (std::fabs(roots[k] - z) < best) best = std::fabs(roots[k] - z), zt = roots[k];
-    if (!(best < HUGE_VAL) || !(zt > lo && zt < hi)) return;
-    const Vec2 q = edges_[e].curve(zt);
-    if (!(norm(q - p) > kCluster) || !(std::fabs(s.g(q)) <= kVertexTolerance * norm(s.g.gradient(q)))) return;
-    z = zt, p = q;
 }
 
 // Where the centre of a line pair g = 0 lies on a straight arc (g along the arc has a double root
