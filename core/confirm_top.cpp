@@ -349,9 +349,9 @@ double piece_bound(const MeshGrid& g, const Target& tg, const Piece& Q, uint32_t
         made = plane && cut(Q, a, nrm, pos, neg) && pos.n >= 3 && neg.n >= 3;
     }
     if (!made) return worst;
-    const double on_t = pos.n ? piece_bound(g, tg, pos, t, goal, depth - 1, slack, seen) : -HUGE_VAL;
+    const double on_t = piece_bound(g, tg, pos, t, goal, depth - 1, slack, seen);
     if (!(on_t <= goal)) return worst;  // this side did not close: the whole piece does not
-    const double on_u = neg.n ? piece_bound(g, tg, neg, u, goal, depth - 1, slack, seen) : -HUGE_VAL;
+    const double on_u = piece_bound(g, tg, neg, u, goal, depth - 1, slack, seen);
     return std::min(worst, std::max(on_t, on_u));
 }
 
